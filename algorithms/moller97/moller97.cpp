@@ -1,0 +1,57 @@
+#include "moller97.hpp"
+
+#include "tritri/algorithm.hpp"
+
+namespace tritri {
+namespace {
+
+constexpr const char* kCitation =
+    "Tomas Möller. A Fast Triangle-Triangle Intersection Test. journal of graphics tools "
+    "2(2):25-30, 1997. doi:10.1080/10867651.1997.10487472";
+
+Tolerance published_snap() {
+  return {moller97::kEpsilon, "|N·V + d|, unnormalised plane distance, snapped to 0 below it", false};
+}
+
+Algorithm moller_entry(std::string name, std::string summary, bool snap) {
+  Algorithm a;
+  a.name = std::move(name);
+  a.citation = kCitation;
+  a.summary = std::move(summary);
+  a.boundary = Boundary::closed;
+  if (snap) a.tolerance = published_snap();
+  a.accepts_degenerate = false;
+  return a;
+}
+
+}  // namespace
+
+void register_moller97(Registry& registry) {
+  using moller97::overlap;
+  using moller97::overlap_division_free;
+  using moller97::segment;
+
+  Algorithm published =
+      moller_entry("moller97", "the published test: interval overlap with divisions, EPSILON snap", true);
+  published.overlap = overlap_batch<&overlap<double, true>>;
+  registry.add(std::move(published));
+
+  Algorithm exact_zero = moller_entry(
+      "moller97-nosnap", "the published test without the EPSILON snap (exact-zero comparisons)", false);
+  exact_zero.overlap = overlap_batch<&overlap<double, false>>;
+  registry.add(std::move(exact_zero));
+
+  Algorithm division_free = moller_entry(
+      "moller97-nodiv", "the author's division-free interval test (later code), EPSILON snap", true);
+  division_free.overlap = overlap_batch<&overlap_division_free<double, true>>;
+  registry.add(std::move(division_free));
+
+  Algorithm with_segment = moller_entry(
+      "moller97-segment",
+      "the author's variant returning the intersection segment and a coplanar flag, EPSILON snap", true);
+  with_segment.overlap = overlap_batch<&moller97::overlap_with_segment<double, true>>;
+  with_segment.segment = segment_batch<&segment<double, true>>;
+  registry.add(std::move(with_segment));
+}
+
+}  // namespace tritri

@@ -1,0 +1,182 @@
+#include "check.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <unistd.h>
+
+namespace tritri {
+namespace {
+
+bool stderr_is_terminal() { return isatty(fileno(stderr)) == 1; }
+
+// Runs `count` batches of `run(begin, end)` on every core, showing progress on a terminal.
+template <class Run>
+void parallel_chunks(std::size_t count, const char* what, Run run) {
+  constexpr std::size_t kChunk = 256;
+  const unsigned workers = std::max(1u, std::min(std::thread::hardware_concurrency(),
+                                                 static_cast<unsigned>((count + kChunk - 1) / kChunk)));
+  std::atomic<std::size_t> next{0}, done{0};
+  std::exception_ptr failure;
+  std::mutex failure_lock;
+  const bool show = stderr_is_terminal() && count >= 20000;
+  auto work = [&] {
+    for (;;) {
+      const std::size_t begin = next.fetch_add(kChunk);
+      if (begin >= count) return;
+      const std::size_t end = std::min(count, begin + kChunk);
+      try {
+        run(begin, end);
+      } catch (...) {
+        std::lock_guard lock(failure_lock);
+        if (!failure) failure = std::current_exception();
+        next = count;
+        return;
+      }
+      const std::size_t finished = done.fetch_add(end - begin) + (end - begin);
+      if (show && (finished / kChunk) % 64 == 0)
+        std::fprintf(stderr, "\r%s: %zu / %zu", what, finished, count);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (unsigned i = 1; i < workers; ++i) threads.emplace_back(work);
+  work();
+  for (auto& t : threads) t.join();
+  if (show) std::fprintf(stderr, "\r%s: %zu / %zu\n", what, count, count);
+  if (failure) std::rethrow_exception(failure);
+}
+
+std::string overlap_word(bool b) { return b ? "1" : "0"; }
+
+std::string relation_word(const RelationAnswer& a) {
+  if (a.relation == Relation::unknown) return "dim:" + std::string(to_string(a.dimension));
+  return std::string(to_string(a.relation));
+}
+
+}  // namespace
+
+std::vector<OracleRecord> label_cases(const std::vector<Case>& cases) {
+  std::vector<OracleRecord> records(cases.size());
+  parallel_chunks(cases.size(), "labelling", [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      try {
+        records[i] = oracle_label(cases[i].pair);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(cases[i].source + ":" + std::to_string(cases[i].line) + ": case '" +
+                                 cases[i].name + "': " + e.what());
+      }
+    }
+  });
+  return records;
+}
+
+std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases) {
+  std::vector<Answers> answers(cases.size());
+  // Only the pairs the algorithm accepts are handed to it, in one contiguous batch per level.
+  std::vector<std::size_t> index;
+  std::vector<TrianglePair> pairs;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (!algorithm.accepts_degenerate && has_degenerate_triangle(cases[i].pair)) {
+      answers[i].declined = true;
+      continue;
+    }
+    index.push_back(i);
+    pairs.push_back(cases[i].pair);
+  }
+  if (algorithm.overlap) {
+    std::vector<Overlap> out(pairs.size());
+    algorithm.overlap(pairs.data(), pairs.size(), out.data());
+    for (std::size_t k = 0; k < index.size(); ++k) answers[index[k]].overlap = out[k];
+  }
+  if (algorithm.relation) {
+    std::vector<RelationAnswer> out(pairs.size());
+    algorithm.relation(pairs.data(), pairs.size(), out.data());
+    for (std::size_t k = 0; k < index.size(); ++k) answers[index[k]].relation = out[k];
+  }
+  if (algorithm.segment) {
+    std::vector<SegmentAnswer> out(pairs.size());
+    algorithm.segment(pairs.data(), pairs.size(), out.data());
+    for (std::size_t k = 0; k < index.size(); ++k) answers[index[k]].segment = out[k];
+  }
+  return answers;
+}
+
+void score(const Algorithm& algorithm, const std::vector<Case>& cases,
+           const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
+           CheckResult& result) {
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string family = cases[i].family();
+    if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
+      result.families.push_back(family);
+    Tally& tally = result.tallies[{algorithm.name, family}];
+    ++tally.cases;
+    const Answers& a = answers[i];
+    const OracleRecord& truth = oracle[i];
+    if (a.declined) {
+      ++tally.unsupported;
+      continue;
+    }
+    auto fail = [&](Level level, std::string answer, std::string expected) {
+      result.failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected)});
+    };
+
+    // Overlap: from the overlap level, else derived from the relation the algorithm gave.
+    Overlap overlap = a.overlap;
+    if (!algorithm.overlap && algorithm.relation) {
+      const Dimension d = a.relation.relation == Relation::unknown ? a.relation.dimension
+                                                                    : dimension_of(a.relation.relation);
+      overlap = a.relation.relation == Relation::unsupported || d == Dimension::unknown
+                    ? Overlap::unsupported
+                    : (d == Dimension::none ? Overlap::no : Overlap::yes);
+    }
+    bool unsupported = overlap == Overlap::unsupported;
+    if (!unsupported) {
+      const bool said = overlap == Overlap::yes;
+      if (said && !truth.overlap) ++tally.false_positives;
+      if (!said && truth.overlap) ++tally.false_negatives;
+      if (said != truth.overlap) fail(Level::overlap, overlap_word(said), overlap_word(truth.overlap));
+    }
+
+    if (algorithm.relation) {
+      const RelationAnswer& r = a.relation;
+      if (r.relation == Relation::unsupported) {
+        unsupported = true;
+      } else {
+        // Degenerate input has no relation of two proper triangles: only the dimension is scored.
+        const bool by_dimension = r.relation == Relation::unknown || truth.degenerate;
+        const Dimension said_dim = r.relation == Relation::unknown ? r.dimension : dimension_of(r.relation);
+        const bool wrong = by_dimension ? said_dim != truth.dimension : r.relation != truth.relation;
+        if (wrong) {
+          ++tally.misclassified;
+          fail(Level::relation, relation_word(r),
+               by_dimension ? "dim:" + std::string(to_string(truth.dimension))
+                            : std::string(to_string(truth.relation)));
+        }
+      }
+    }
+    if (unsupported) {
+      ++tally.unsupported;
+      fail(Level::overlap, "unsupported", overlap_word(truth.overlap));
+    }
+  }
+}
+
+CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
+                      const std::vector<OracleRecord>& oracle) {
+  CheckResult result;
+  result.algorithms = algorithms;
+  for (const auto& c : cases) {
+    const std::string family = c.family();
+    if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
+      result.families.push_back(family);
+  }
+  for (const Algorithm* algorithm : algorithms)
+    score(*algorithm, cases, oracle, answer_cases(*algorithm, cases), result);
+  return result;
+}
+
+}  // namespace tritri

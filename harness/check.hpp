@@ -1,0 +1,62 @@
+// `tritri check`: every chosen algorithm against the oracle, tallied per algorithm × family.
+#pragma once
+
+#include "casefile.hpp"
+#include "oracle/oracle.hpp"
+#include "tritri/algorithm.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tritri {
+
+// The oracle's records for `cases`, computed on all cores. Progress goes to stderr when it is a
+// terminal and the job is long. An oracle failure names the case.
+std::vector<OracleRecord> label_cases(const std::vector<Case>& cases);
+
+// One algorithm's answers to one case, at every level it serves.
+struct Answers {
+  bool declined = false;  // the harness did not call it: a degenerate case it does not accept
+  Overlap overlap = Overlap::unsupported;
+  RelationAnswer relation;
+  SegmentAnswer segment;
+};
+
+// Runs one algorithm on every case through its batch entry points. Degenerate cases are passed
+// only to algorithms that accept them.
+std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases);
+
+// A disagreement with the oracle. `answer` and `expected` are the vocabulary's words.
+struct Failure {
+  std::string algorithm;
+  std::size_t case_index = 0;
+  Level level = Level::overlap;
+  std::string answer;
+  std::string expected;
+};
+
+struct Tally {
+  std::size_t cases = 0;
+  std::size_t false_positives = 0;  // overlap 1 where the oracle says 0
+  std::size_t false_negatives = 0;  // overlap 0 where the oracle says 1
+  std::size_t misclassified = 0;    // relation (or dimension) differs from the oracle's
+  std::size_t unsupported = 0;      // declined by the algorithm or, for degenerate input, the harness
+};
+
+struct CheckResult {
+  std::vector<const Algorithm*> algorithms;
+  std::vector<std::string> families;  // in order of first appearance
+  std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, family)
+  std::vector<Failure> failures;
+};
+
+// Scores one algorithm's answers against the oracle and adds them to `result`.
+void score(const Algorithm& algorithm, const std::vector<Case>& cases,
+           const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
+           CheckResult& result);
+
+CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
+                      const std::vector<OracleRecord>& oracle);
+
+}  // namespace tritri

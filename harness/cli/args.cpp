@@ -1,0 +1,69 @@
+#include "args.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+
+namespace tritri::cli {
+
+Args::Args(int argc, char** argv, const std::set<std::string>& valued,
+           const std::set<std::string>& flags) {
+  bool only_positional = false;
+  for (int i = 0; i < argc; ++i) {
+    std::string word = argv[i];
+    if (only_positional || word.size() < 2 || word.rfind("--", 0) != 0) {
+      if (!only_positional && word.size() > 1 && word[0] == '-' && word != "-")
+        throw UsageError("unknown option '" + word + "'");
+      positional_.push_back(word);
+      continue;
+    }
+    if (word == "--") {
+      only_positional = true;
+      continue;
+    }
+    std::string name = word, value;
+    bool has_value = false;
+    if (auto eq = word.find('='); eq != std::string::npos) {
+      name = word.substr(0, eq);
+      value = word.substr(eq + 1);
+      has_value = true;
+    }
+    if (name == "--help" || flags.count(name)) {
+      if (has_value) throw UsageError("option '" + name + "' takes no value");
+      flags_.insert(name);
+    } else if (valued.count(name)) {
+      if (!has_value) {
+        if (i + 1 >= argc) throw UsageError("option '" + name + "' needs a value");
+        value = argv[++i];
+      }
+      values_.emplace(name, value);
+    } else {
+      throw UsageError("unknown option '" + name + "'");
+    }
+  }
+}
+
+std::vector<std::string> Args::values(const std::string& name) const {
+  std::vector<std::string> out;
+  auto [begin, end] = values_.equal_range(name);
+  for (auto it = begin; it != end; ++it) out.push_back(it->second);
+  return out;
+}
+
+std::optional<std::string> Args::value(const std::string& name) const {
+  auto all = values(name);
+  if (all.empty()) return std::nullopt;
+  return all.back();
+}
+
+std::size_t Args::count(const std::string& name, std::size_t fallback) const {
+  auto text = value(name);
+  if (!text) return fallback;
+  errno = 0;
+  char* end = nullptr;
+  const long long n = std::strtoll(text->c_str(), &end, 10);
+  if (text->empty() || *end != '\0' || errno != 0 || n < 0)
+    throw UsageError("option '" + name + "' takes a whole number >= 0, not '" + *text + "'");
+  return static_cast<std::size_t>(n);
+}
+
+}  // namespace tritri::cli

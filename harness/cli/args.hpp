@@ -1,0 +1,40 @@
+// A small command-line parser: options are declared up front, so a misspelt option is an error
+// rather than a silently ignored word.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tritri::cli {
+
+// A usage error: printed with the command's name and a pointer to --help; exit status 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Args {
+ public:
+  // `valued`: options that take a value (--algo NAME or --algo=NAME); `flags`: options that do
+  // not. Every command also accepts --help.
+  Args(int argc, char** argv, const std::set<std::string>& valued, const std::set<std::string>& flags);
+
+  bool help() const { return flag("--help"); }
+  bool flag(const std::string& name) const { return flags_.count(name) > 0; }
+  std::vector<std::string> values(const std::string& name) const;
+  std::optional<std::string> value(const std::string& name) const;  // the last one given
+  const std::vector<std::string>& positional() const { return positional_; }
+
+  // Reads an option as a non-negative count, with a clear error for anything else.
+  std::size_t count(const std::string& name, std::size_t fallback) const;
+
+ private:
+  std::vector<std::string> positional_;
+  std::multimap<std::string, std::string> values_;
+  std::set<std::string> flags_;
+};
+
+}  // namespace tritri::cli

@@ -1,0 +1,83 @@
+#include "args.hpp"
+#include "check.hpp"
+#include "check_output.hpp"
+#include "commands.hpp"
+#include "io.hpp"
+
+#include <iostream>
+
+namespace tritri::cli {
+namespace {
+
+void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::size_t limit) {
+  std::cout << title << ": " << rows.size() << '\n';
+  std::size_t shown = 0;
+  for (const auto& [algorithm, name, level, answer, expected] : rows) {
+    if (shown++ == limit) {
+      std::cout << "  ...\n";
+      break;
+    }
+    std::cout << "  " << algorithm << '\t' << name << '\t' << level << "\tanswered " << answer
+              << ", oracle " << expected << '\n';
+  }
+}
+
+}  // namespace
+
+int run_check(int argc, char** argv) {
+  Args args(argc, argv, {"--algo", "--json", "--baseline", "--write-baseline", "--max-failures"},
+            {"--quiet"});
+  if (args.help()) {
+    std::cout
+        << "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
+           "                    [--write-baseline FILE] [--max-failures N] [--quiet] FILE...\n\n"
+           "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
+           "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
+           "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
+           "relation (misclassified relation, '-' when not answered) and unsupported (declined, or\n"
+           "degenerate input the algorithm does not accept). Then the first N disagreements\n"
+           "(default 20), each paste-ready as a case line in %.17g and in hex float.\n\n"
+           "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'\n"
+           "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
+           "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
+           "                       is new; list the recorded ones that no longer occur\n"
+           "  --write-baseline F   record this run's disagreements as a baseline\n"
+           "  --max-failures N     how many disagreements to print (default 20)\n"
+           "  --quiet              print only the table (and the baseline comparison)\n\n"
+           "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
+           "bad arguments or input.\n";
+    return kOk;
+  }
+  const auto algorithms = select_algorithms(args.values("--algo"));
+  const std::size_t max_failures = args.count("--max-failures", 20);
+  // Read the baselines before the (possibly long) run, so a wrong path fails at once.
+  Baseline recorded;
+  const auto baseline_files = args.values("--baseline");
+  for (const auto& file : baseline_files)
+    for (auto& row : read_baseline(file)) recorded.insert(row);
+
+  const auto cases = load_cases(args.positional());
+  const auto oracle = label_cases(cases);
+  const CheckResult result = run_check(algorithms, cases, oracle);
+
+  print_check_table(std::cout, result);
+  if (!args.flag("--quiet") && !result.failures.empty()) {
+    std::cout << '\n';
+    print_failures(std::cout, result, cases, max_failures);
+  }
+  if (auto json = args.value("--json"))
+    write_file_atomically(*json, [&](std::ostream& out) {
+      write_check_json(out, result, cases, oracle, args.positional());
+    });
+  if (auto out_path = args.value("--write-baseline"))
+    write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });
+
+  if (baseline_files.empty()) return kOk;
+  const auto comparison = compare_with_baseline(recorded, result, cases);
+  std::cout << '\n';
+  print_rows("new disagreements (not in the baseline)", comparison.new_failures, max_failures);
+  print_rows("fixed (in the baseline, no longer occurring)", comparison.fixed, max_failures);
+  return comparison.new_failures.empty() ? kOk : kFindings;
+}
+
+}  // namespace tritri::cli

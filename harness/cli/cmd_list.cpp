@@ -1,0 +1,48 @@
+#include "args.hpp"
+#include "casefile.hpp"
+#include "commands.hpp"
+
+#include <iomanip>
+#include <iostream>
+
+namespace tritri::cli {
+
+int run_list(int argc, char** argv) {
+  Args args(argc, argv, {}, {"--tsv"});
+  if (args.help()) {
+    std::cout << "usage: tritri list [--tsv]\n\n"
+                 "Every built-in algorithm: the answer levels it serves (overlap, relation, segment),\n"
+                 "whether touching counts (closed) or not (open), its tolerance (value and the\n"
+                 "quantity it is compared with, or none), whether it accepts zero-area triangles,\n"
+                 "and its citation. --tsv prints one tab-separated row per algorithm.\n";
+    return kOk;
+  }
+  if (!args.positional().empty()) throw UsageError("list takes no files");
+  auto tolerance_text = [](const Algorithm& a) {
+    if (a.tolerance.none()) return std::string("none");
+    return format_double(a.tolerance.value) + (a.tolerance.relative ? " relative" : " absolute") +
+           " on " + a.tolerance.quantity;
+  };
+  const auto& all = registry().all();
+  if (args.flag("--tsv")) {
+    std::cout << "name\tlevels\tboundary\ttolerance\tdegenerate\tsummary\tcitation\n";
+    for (const auto& a : all)
+      std::cout << a.name << '\t' << a.levels() << '\t' << (a.boundary == Boundary::closed ? "closed" : "open")
+                << '\t' << tolerance_text(a) << '\t' << (a.accepts_degenerate ? "accepted" : "rejected")
+                << '\t' << a.summary << '\t' << a.citation << '\n';
+    return kOk;
+  }
+  std::size_t width = 4;
+  for (const auto& a : all) width = std::max(width, a.name.size());
+  for (const auto& a : all) {
+    std::cout << std::left << std::setw(static_cast<int>(width)) << a.name << "  " << a.summary << '\n'
+              << std::string(width + 2, ' ') << "levels: " << a.levels()
+              << "; boundary: " << (a.boundary == Boundary::closed ? "closed" : "open")
+              << "; degenerate triangles: " << (a.accepts_degenerate ? "accepted" : "not accepted") << '\n'
+              << std::string(width + 2, ' ') << "tolerance: " << tolerance_text(a) << '\n'
+              << std::string(width + 2, ' ') << a.citation << "\n\n";
+  }
+  return kOk;
+}
+
+}  // namespace tritri::cli

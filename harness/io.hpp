@@ -1,0 +1,14 @@
+// Writing result files so that an interrupted run never leaves a half-written one behind.
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+namespace tritri {
+
+// Writes through `fill` into a temporary file beside `path`, then renames it over `path`.
+// Throws std::runtime_error naming the path if it cannot be written.
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill);
+
+}  // namespace tritri
