@@ -34,16 +34,19 @@ void register_moller97(Registry& registry) {
   Algorithm published =
       moller_entry("moller97", "the published test: interval overlap with divisions, EPSILON snap", true);
   published.overlap = overlap_batch<&overlap<double, true>>;
+  published.overlap_float = overlap_batch<&overlap<float, true>>;
   registry.add(std::move(published));
 
   Algorithm exact_zero = moller_entry(
       "moller97-nosnap", "the published test without the EPSILON snap (exact-zero comparisons)", false);
   exact_zero.overlap = overlap_batch<&overlap<double, false>>;
+  exact_zero.overlap_float = overlap_batch<&overlap<float, false>>;
   registry.add(std::move(exact_zero));
 
   Algorithm division_free = moller_entry(
       "moller97-nodiv", "the author's division-free interval test (later code), EPSILON snap", true);
   division_free.overlap = overlap_batch<&overlap_division_free<double, true>>;
+  division_free.overlap_float = overlap_batch<&overlap_division_free<float, true>>;
   registry.add(std::move(division_free));
 
   Algorithm with_segment = moller_entry(
@@ -51,6 +54,8 @@ void register_moller97(Registry& registry) {
       "the author's variant returning the intersection segment and a coplanar flag, EPSILON snap", true);
   with_segment.overlap = overlap_batch<&moller97::overlap_with_segment<double, true>>;
   with_segment.segment = segment_batch<&segment<double, true>>;
+  with_segment.overlap_float = overlap_batch<&moller97::overlap_with_segment<float, true>>;
+  with_segment.segment_float = segment_batch<&segment<float, true>>;
   registry.add(std::move(with_segment));
 }
 

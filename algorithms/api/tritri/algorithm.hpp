@@ -42,6 +42,12 @@ struct Algorithm {
   RelationBatch relation = nullptr;
   SegmentBatch segment = nullptr;
 
+  // The same port instantiated on float (each pair rounded to float inside the call), for the
+  // stability report. Optional; set with the same adapters from the float kernel.
+  OverlapBatch overlap_float = nullptr;
+  RelationBatch relation_float = nullptr;
+  SegmentBatch segment_float = nullptr;
+
   std::string folder;  // filled in by the registry: the algorithm's folder under algorithms/
 
   bool answers(Level level) const {
@@ -55,27 +61,48 @@ struct Algorithm {
   std::string levels() const;  // "overlap,relation"
 };
 
-// Adapters from a per-pair kernel to a batch entry point. A kernel takes `const TrianglePair&`
-// and returns the level's answer type (bool is accepted for overlap).
+// Adapters from a per-pair kernel to a batch entry point. A kernel takes `const PairT<T>&` for
+// its scalar T (a double pair is passed as is; any other T gets the pair rounded to T) and
+// returns the level's answer type (bool is accepted for overlap).
+namespace detail {
+template <class F>
+struct kernel_scalar;
+template <class R, class T>
+struct kernel_scalar<R (*)(const PairT<T>&)> {
+  using type = T;
+};
+
+template <auto Kernel>
+decltype(auto) call_kernel(const TrianglePair& pair) {
+  using T = typename kernel_scalar<decltype(Kernel)>::type;
+  if constexpr (std::is_same_v<T, double>) {
+    return Kernel(pair);
+  } else {
+    return Kernel(cast<T>(pair));
+  }
+}
+}  // namespace detail
+
 template <auto Kernel>
 void overlap_batch(const TrianglePair* pairs, std::size_t n, Overlap* out) {
   for (std::size_t i = 0; i < n; ++i) {
-    if constexpr (std::is_same_v<decltype(Kernel(pairs[i])), bool>) {
-      out[i] = Kernel(pairs[i]) ? Overlap::yes : Overlap::no;
+    const auto answer = detail::call_kernel<Kernel>(pairs[i]);
+    if constexpr (std::is_same_v<std::decay_t<decltype(answer)>, bool>) {
+      out[i] = answer ? Overlap::yes : Overlap::no;
     } else {
-      out[i] = Kernel(pairs[i]);
+      out[i] = answer;
     }
   }
 }
 
 template <auto Kernel>
 void relation_batch(const TrianglePair* pairs, std::size_t n, RelationAnswer* out) {
-  for (std::size_t i = 0; i < n; ++i) out[i] = Kernel(pairs[i]);
+  for (std::size_t i = 0; i < n; ++i) out[i] = detail::call_kernel<Kernel>(pairs[i]);
 }
 
 template <auto Kernel>
 void segment_batch(const TrianglePair* pairs, std::size_t n, SegmentAnswer* out) {
-  for (std::size_t i = 0; i < n; ++i) out[i] = Kernel(pairs[i]);
+  for (std::size_t i = 0; i < n; ++i) out[i] = detail::call_kernel<Kernel>(pairs[i]);
 }
 
 class Registry {
