@@ -1,0 +1,117 @@
+// Möller 1997: its pieces, its answers in general position, and the behaviour of its snap.
+#include "moller97.hpp"
+
+#include "casefile.hpp"
+#include "oracle/oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace tritri::moller97 {
+namespace {
+
+Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
+const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
+
+TEST(Moller97Pieces, PlaneDistancesAreUnnormalised) {
+  const auto p = plane_of(kFloor);
+  EXPECT_EQ(p.normal, Vec3<double>(0, 0, 16));  // (4,0,0) x (0,4,0)
+  const auto d = distances<double, false>(p, tri({0, 0, 1}, {0, 0, -2}, {5, 5, 0}));
+  EXPECT_EQ(d.d[0], 16.0);
+  EXPECT_EQ(d.d[1], -32.0);
+  EXPECT_EQ(d.d[2], 0.0);
+}
+
+TEST(Moller97Pieces, SnapZeroesOnlyBelowEpsilon) {
+  const auto p = plane_of(kFloor);  // |N| = 16: a height h gives d = 16 h
+  const auto d = distances<double, true>(p, tri({0, 0, 5e-8}, {0, 0, 1e-7}, {0, 0, 1e-6}));
+  EXPECT_EQ(d.d[0], 0.0);   // 8e-7 < 1e-6
+  EXPECT_EQ(d.d[1], 16e-7); // not below EPSILON
+  EXPECT_EQ(d.d[2], 16e-6);
+}
+
+TEST(Moller97Pieces, LoneVertexFollowsThePublishedCaseOrder) {
+  auto with = [](double a, double b, double c) {
+    Distances<double> s{{a, b, c}, a * b, a * c};
+    return lone_vertex(s);
+  };
+  EXPECT_EQ(with(1, 2, -1), 2);
+  EXPECT_EQ(with(1, -2, 3), 1);
+  EXPECT_EQ(with(-1, 2, 3), 0);
+  EXPECT_EQ(with(0, 2, 3), 0);   // a vertex on the plane, the others on one side
+  EXPECT_EQ(with(0, 2, -3), 1);  // a vertex on the plane, the others straddling
+  EXPECT_EQ(with(0, 0, 3), 2);
+  EXPECT_EQ(with(0, 0, 0), -1);  // coplanar
+}
+
+TEST(Moller97Pieces, CoplanarProjectionDropsTheDominantAxis) {
+  EXPECT_EQ(coplanar_projection<double>({0, 0, 5}).i0, 0);
+  EXPECT_EQ(coplanar_projection<double>({0, 0, 5}).i1, 1);
+  EXPECT_EQ(coplanar_projection<double>({5, 1, 1}).i0, 1);
+  EXPECT_EQ(coplanar_projection<double>({1, 5, 1}).i1, 2);
+}
+
+TEST(Moller97Pieces, TheEdgeTestMissesCollinearOverlap) {
+  const auto p = coplanar_projection<double>({0, 0, 1});
+  // crossing edges are found, endpoints included
+  EXPECT_TRUE(edges_meet<double>(p, {0, 0, 0}, 4, 0, {2, -1, 0}, {2, 1, 0}));
+  EXPECT_TRUE(edges_meet<double>(p, {0, 0, 0}, 4, 0, {4, 0, 0}, {5, 1, 0}));
+  // collinear overlapping edges have a zero denominator and are never reported: as published
+  EXPECT_FALSE(edges_meet<double>(p, {0, 0, 0}, 4, 0, {2, 0, 0}, {6, 0, 0}));
+}
+
+// Random pairs in general position: all four variants answer as the oracle does. With random
+// doubles, exact contact has probability zero and the snap is far below the coordinates' scale.
+TEST(Moller97, AgreesWithTheOracleOnRandomPairs) {
+  std::mt19937_64 rng(97);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto random_triangle = [&] {
+    return tri({unit(rng), unit(rng), unit(rng)}, {unit(rng), unit(rng), unit(rng)},
+               {unit(rng), unit(rng), unit(rng)});
+  };
+  int meeting = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const TrianglePair pair{random_triangle(), random_triangle()};
+    const bool truth = oracle_label(pair).overlap;
+    meeting += truth;
+    ASSERT_EQ((overlap<double, true>(pair)), truth) << i;
+    ASSERT_EQ((overlap<double, false>(pair)), truth) << i;
+    ASSERT_EQ((overlap_division_free<double, true>(pair)), truth) << i;
+    ASSERT_EQ((overlap_with_segment<double, true>(pair)), truth) << i;
+  }
+  EXPECT_GT(meeting, 300);  // both outcomes were exercised
+  EXPECT_LT(meeting, 2700);
+}
+
+TEST(Moller97, SegmentVariantReturnsTheIntersection) {
+  // T2 in the plane x = 1 crosses the floor along y in [0, 1]
+  const TrianglePair pair{kFloor, tri({1, 1, -2}, {1, 1, 2}, {1, -3, 1})};
+  const SegmentAnswer s = segment<double, true>(pair);
+  ASSERT_EQ(s.kind, SegmentKind::segment);
+  const Vec3<double> lo = s.p.y() < s.q.y() ? s.p : s.q, hi = s.p.y() < s.q.y() ? s.q : s.p;
+  EXPECT_NEAR((lo - Vec3<double>(1, 0, 0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((hi - Vec3<double>(1, 1, 0)).norm(), 0.0, 1e-15);
+  EXPECT_EQ((segment<double, true>({kFloor, tri({0, 0, 5}, {1, 0, 5}, {0, 1, 6})}).kind), SegmentKind::empty);
+  EXPECT_EQ((segment<double, true>({kFloor, tri({1, 1, 0}, {5, 1, 0}, {1, 5, 0})}).kind), SegmentKind::coplanar);
+}
+
+// The published snap is absolute: a small triangle hovering 1e-8 above the floor is snapped
+// into it and reported as touching, while the exact-zero variant keeps it apart.
+TEST(Moller97, AbsoluteSnapMakesNearbySmallTrianglesTouch) {
+  const TrianglePair hovering{kFloor, tri({1, 1, 1e-8}, {1.001, 1, 1e-8}, {1, 1.001, 1e-8})};
+  ASSERT_FALSE(oracle_label(hovering).overlap);
+  EXPECT_TRUE((overlap<double, true>(hovering)));
+  EXPECT_FALSE((overlap<double, false>(hovering)));
+}
+
+TEST(Moller97, FloatInstantiationAnswersTheBuiltinCases) {
+  const auto cases = read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases");
+  for (const auto& c : cases) {
+    const bool truth = dimension_of(*parse_relation(*c.label("expect"))) != Dimension::none;
+    EXPECT_EQ((overlap<float, true>(cast<float>(c.pair))), truth) << c.name;  // small integers: exact in float
+  }
+}
+
+}  // namespace
+}  // namespace tritri::moller97

@@ -111,6 +111,23 @@ bool in_relative_interior(const ExactTriangle& t, const Point& p) {
   return true;
 }
 
+// sqrt of an exact positive number, to double, without the underflow (tiny separations) or
+// overflow (huge coordinates) of rounding the square first: scale by powers of 4, which the
+// square root turns into exact powers of 2.
+double sqrt_to_double(K::FT square) {
+  int shift = 0;  // sqrt(square) = sqrt(scaled) * 2^-shift
+  const K::FT up = std::ldexp(1.0, 100), down = std::ldexp(1.0, -100);
+  while (CGAL::to_double(square) < 1e-200) {
+    square = square * up;
+    shift += 50;
+  }
+  while (!std::isfinite(CGAL::to_double(square)) || CGAL::to_double(square) > 1e200) {
+    square = square * down;
+    shift -= 50;
+  }
+  return std::ldexp(std::sqrt(CGAL::to_double(square)), -shift);
+}
+
 void store_points(OracleRecord& r, std::initializer_list<Point> points) {
   r.point_count = 0;
   for (const auto& p : points) r.points[static_cast<std::size_t>(r.point_count++)] = to_double(p);
@@ -173,7 +190,7 @@ OracleRecord oracle_label(const TrianglePair& pair) {
     r.dimension = Dimension::none;
     const auto squared = CGAL::squared_distance(a, b);
     if (squared == 0) throw std::runtime_error("oracle: disjoint triangles at distance zero");
-    r.separation = std::sqrt(CGAL::to_double(squared));
+    r.separation = sqrt_to_double(squared);
     return r;
   }
 

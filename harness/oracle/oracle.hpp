@@ -31,9 +31,10 @@ struct OracleRecord {
   Dimension dimension = Dimension::none;
   bool coplanar = false;  // all of T2's vertices lie in T1's plane (false when degenerate)
   bool parallel = false;  // distinct parallel planes
-  // Euclidean distance between the closed triangles, from CGAL's exact squared distance rounded
-  // to double and then square-rooted; 0 when they overlap. NaN when it is not computed (a
-  // degenerate pair that does not meet: CGAL 5.5 has no exact segment–triangle distance).
+  // Euclidean distance between the closed triangles: the square root of CGAL's exact squared
+  // distance, within an ulp or two, and never 0 for triangles that do not meet (however close);
+  // 0 when they overlap. NaN when it is not computed (a degenerate pair that does not meet: CGAL
+  // 5.5 has no exact segment–triangle distance).
   double separation = 0.0;
   Stage stage = Stage::interval;
   // The exact intersection, each coordinate rounded to the nearest double: 0 points when empty,
