@@ -33,13 +33,25 @@ const Algorithm* Registry::find(std::string_view name) const {
   return nullptr;
 }
 
-const Registry& registry() {
-  static const Registry instance = [] {
+namespace {
+Registry& the_registry() {
+  static Registry instance = [] {
     Registry r;
     register_builtin_algorithms(r);
     return r;
   }();
   return instance;
+}
+}  // namespace
+
+const Registry& registry() { return the_registry(); }
+
+const Algorithm& add_external_algorithm(Algorithm algorithm) {
+  Registry& r = the_registry();
+  const std::string folder = algorithm.folder;
+  r.set_current_folder(folder);
+  r.add(std::move(algorithm));
+  return r.all().back();
 }
 
 }  // namespace tritri
