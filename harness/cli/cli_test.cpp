@@ -1,4 +1,6 @@
 // The tritri commands run as documented: their columns, their errors, their exit statuses.
+#include "tritri_runner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -9,22 +11,8 @@
 
 namespace {
 
-struct Outcome {
-  int status;
-  std::string out;  // stdout and stderr together
-};
-
-Outcome tritri(const std::string& arguments) {
-  const std::string command = std::string(TRITRI_BINARY_DIR) + "/bin/tritri " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  Outcome run{-1, ""};
-  if (!pipe) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) run.out += buffer.data();
-  const int raw = pclose(pipe);
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return run;
-}
+using tritri::testing_support::Outcome;
+Outcome tritri(const std::string& arguments) { return tritri::testing_support::run_tritri(arguments); }
 
 const std::string kBuiltin = std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases";
 

@@ -19,6 +19,11 @@ std::vector<Case> load_cases(const std::vector<std::string>& files) {
       all.push_back(std::move(c));
     }
   }
+  if (all.empty()) {
+    std::string names;
+    for (const auto& f : files) names += (names.empty() ? "" : ", ") + f;
+    throw UsageError("no cases in " + names + " (every line is blank or a comment)");
+  }
   return all;
 }
 

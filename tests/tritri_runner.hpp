@@ -1,0 +1,36 @@
+// Runs the built tritri binary for tests that exercise it as a user would.
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace tritri::testing_support {
+
+struct Outcome {
+  int status = -1;  // exit status; -1 if it did not exit normally
+  std::string out;  // stdout and stderr together
+};
+
+inline Outcome run_tritri(const std::string& arguments) {
+  const std::string command = std::string(TRITRI_BINARY_DIR) + "/bin/tritri " + arguments + " 2>&1";
+  Outcome run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) run.out += buffer.data();
+  const int raw = pclose(pipe);
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return run;
+}
+
+// Writes `text` to a file under the build tree and returns its path.
+inline std::string scratch_file(const std::string& name, const std::string& text) {
+  const std::string path = std::string(TRITRI_BINARY_DIR) + "/scratch-" + name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+}  // namespace tritri::testing_support
