@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -57,7 +58,73 @@ std::string relation_word(const RelationAnswer& a) {
   return std::string(to_string(a.relation));
 }
 
+double point_segment_distance(const Vec3<double>& p, const Vec3<double>& a, const Vec3<double>& b) {
+  const Vec3<double> ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + ab * t)).norm();
+}
+
+Dimension dimension_of(SegmentKind k) {
+  switch (k) {
+    case SegmentKind::empty: return Dimension::none;
+    case SegmentKind::point: return Dimension::point;
+    case SegmentKind::segment: return Dimension::segment;
+    case SegmentKind::area: return Dimension::area;
+    default: return Dimension::unknown;
+  }
+}
+
+void score_segment(const SegmentAnswer& s, const TrianglePair& pair, const OracleRecord& truth,
+                   SegmentTally& tally) {
+  if (s.kind == SegmentKind::unsupported) return;
+  ++tally.answered;
+  if (s.kind == SegmentKind::coplanar) {
+    ++tally.not_computed;
+    return;
+  }
+  if (dimension_of(s.kind) != truth.dimension) ++tally.kind_mismatches;
+  const bool answered_geometry = s.kind == SegmentKind::point || s.kind == SegmentKind::segment;
+  const bool exact_geometry = truth.point_count == 1 || truth.point_count == 2;
+  if (!answered_geometry || !exact_geometry) return;
+  const Vec3<double>& q = s.kind == SegmentKind::point ? s.p : s.q;
+  const Vec3<double>& b = truth.points[truth.point_count == 2 ? 1 : 0];
+  const double scale = pair_size(pair);
+  tally.errors.push_back(hausdorff_distance(s.p, q, truth.points[0], b) / (scale > 0 ? scale : 1.0));
+}
+
 }  // namespace
+
+double SegmentTally::median_error() const {
+  if (errors.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> sorted = errors;
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  return n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+}
+
+double SegmentTally::max_error() const {
+  if (errors.empty()) return std::numeric_limits<double>::quiet_NaN();
+  return *std::max_element(errors.begin(), errors.end());
+}
+
+// Between two convex sets the distance to the other is convex along a segment, so the
+// Hausdorff distance between segments is attained at an endpoint.
+double hausdorff_distance(const Vec3<double>& a0, const Vec3<double>& a1, const Vec3<double>& b0,
+                          const Vec3<double>& b1) {
+  return std::max({point_segment_distance(a0, b0, b1), point_segment_distance(a1, b0, b1),
+                   point_segment_distance(b0, a0, a1), point_segment_distance(b1, a0, a1)});
+}
+
+double pair_size(const TrianglePair& pair) {
+  Vec3<double> lo = pair.t1[0], hi = pair.t1[0];
+  for (const Triangle* t : {&pair.t1, &pair.t2})
+    for (int i = 0; i < 3; ++i) {
+      lo = lo.cwiseMin((*t)[i]);
+      hi = hi.cwiseMax((*t)[i]);
+    }
+  return (hi - lo).norm();
+}
 
 std::vector<OracleRecord> label_cases(const std::vector<Case>& cases) {
   std::vector<OracleRecord> records(cases.size());
@@ -124,8 +191,14 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
       result.failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected)});
     };
 
-    // Overlap: from the overlap level, else derived from the relation the algorithm gave.
+    // Overlap: from the overlap level, else derived from the relation the algorithm gave, else
+    // from its segment answer.
     Overlap overlap = a.overlap;
+    if (!algorithm.overlap && !algorithm.relation && algorithm.segment) {
+      overlap = a.segment.kind == SegmentKind::unsupported ? Overlap::unsupported
+                : a.segment.kind == SegmentKind::empty    ? Overlap::no
+                                                          : Overlap::yes;
+    }
     if (!algorithm.overlap && algorithm.relation) {
       const Dimension d = a.relation.relation == Relation::unknown ? a.relation.dimension
                                                                     : dimension_of(a.relation.relation);
@@ -150,14 +223,17 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
         const bool by_dimension = r.relation == Relation::unknown || truth.degenerate;
         const Dimension said_dim = r.relation == Relation::unknown ? r.dimension : dimension_of(r.relation);
         const bool wrong = by_dimension ? said_dim != truth.dimension : r.relation != truth.relation;
+        const std::string said = by_dimension ? "dim:" + std::string(to_string(said_dim)) : relation_word(r);
+        const std::string expected = by_dimension ? "dim:" + std::string(to_string(truth.dimension))
+                                                  : std::string(to_string(truth.relation));
+        ++tally.confusion[{said, expected}];
         if (wrong) {
           ++tally.misclassified;
-          fail(Level::relation, relation_word(r),
-               by_dimension ? "dim:" + std::string(to_string(truth.dimension))
-                            : std::string(to_string(truth.relation)));
+          fail(Level::relation, relation_word(r), expected);
         }
       }
     }
+    if (algorithm.segment) score_segment(a.segment, cases[i].pair, truth, tally.segment);
     if (unsupported) {
       ++tally.unsupported;
       fail(Level::overlap, "unsupported", overlap_word(truth.overlap));

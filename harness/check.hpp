@@ -36,13 +36,39 @@ struct Failure {
   std::string expected;
 };
 
+// The segment level against the exact intersection, for algorithms that answer it.
+struct SegmentTally {
+  std::size_t answered = 0;        // cases with a segment-level answer (not declined/unsupported)
+  std::size_t kind_mismatches = 0; // the answer's dimension (empty/point/segment/area) is not the oracle's
+  std::size_t not_computed = 0;    // answered `coplanar`: contact found, no intersection given
+  // Where both the answer and the exact intersection are a point or a segment: the Hausdorff
+  // distance between them divided by the pair's bounding-box diagonal.
+  std::vector<double> errors;
+
+  double median_error() const;  // NaN when nothing was measured
+  double max_error() const;
+};
+
+// (answered, oracle) -> cases. Words as in failures: relation names, or "dim:<dimension>" when
+// the algorithm states only the dimension (or the case is degenerate).
+using Confusion = std::map<std::pair<std::string, std::string>, std::size_t>;
+
 struct Tally {
   std::size_t cases = 0;
   std::size_t false_positives = 0;  // overlap 1 where the oracle says 0
   std::size_t false_negatives = 0;  // overlap 0 where the oracle says 1
   std::size_t misclassified = 0;    // relation (or dimension) differs from the oracle's
   std::size_t unsupported = 0;      // declined by the algorithm or, for degenerate input, the harness
+  Confusion confusion;              // relation level only; every scored case, diagonal included
+  SegmentTally segment;             // segment level only
 };
+
+// The Hausdorff distance between two point sets, each a point (a == b) or a segment [a, b].
+double hausdorff_distance(const Vec3<double>& a0, const Vec3<double>& a1, const Vec3<double>& b0,
+                          const Vec3<double>& b1);
+
+// The diagonal of the pair's axis-aligned bounding box: the scale segment errors are relative to.
+double pair_size(const TrianglePair& pair);
 
 struct CheckResult {
   std::vector<const Algorithm*> algorithms;

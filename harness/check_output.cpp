@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -37,7 +38,87 @@ nlohmann::json algorithm_json(const Algorithm& a) {
           {"accepts_degenerate", a.accepts_degenerate}};
 }
 
+nlohmann::json number_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
+
+std::string short_number(double x) {
+  if (std::isnan(x)) return "-";
+  std::ostringstream s;
+  s << std::setprecision(2) << x;
+  return s.str();
+}
+
+template <class Row>
+void for_each_tally(const CheckResult& result, Row row) {
+  for (const Algorithm* a : result.algorithms)
+    for (const auto& family : result.families) {
+      auto it = result.tallies.find({a->name, family});
+      if (it != result.tallies.end()) row(*a, family, it->second);
+    }
+}
+
 }  // namespace
+
+void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells) {
+  if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
+                   [](const Algorithm* a) { return a->relation != nullptr; }))
+    return;
+  std::size_t name_width = 9, family_width = 6;
+  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
+  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  out << "\nrelation confusion (answered->oracle cases; "
+      << (all_cells ? "every cell" : "wrong cells only, --confusion for all") << ")\n";
+  for_each_tally(result, [&](const Algorithm& a, const std::string& family, const Tally& t) {
+    if (!a.relation) return;
+    std::string cells;
+    for (const auto& [key, count] : t.confusion) {
+      if (!all_cells && key.first == key.second) continue;
+      if (!cells.empty()) cells += ", ";
+      cells += key.first + "->" + key.second + " " + std::to_string(count);
+    }
+    if (cells.empty()) return;
+    out << std::left << std::setw(static_cast<int>(name_width)) << a.name << "  "
+        << std::setw(static_cast<int>(family_width)) << family << "  " << cells << '\n';
+  });
+}
+
+void print_segment_errors(std::ostream& out, const CheckResult& result) {
+  if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
+                   [](const Algorithm* a) { return a->segment != nullptr; }))
+    return;
+  std::size_t name_width = 9, family_width = 6;
+  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
+  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  out << "\nsegment error (Hausdorff distance to the exact intersection / pair's bounding-box diagonal)\n";
+  auto row = [&](const std::string& algorithm, const std::string& family, const std::string& answered,
+                 const std::string& measured, const std::string& median, const std::string& max,
+                 const std::string& kind, const std::string& not_computed) {
+    out << std::left << std::setw(static_cast<int>(name_width)) << algorithm << "  "
+        << std::setw(static_cast<int>(family_width)) << family << std::right << std::setw(9) << answered
+        << std::setw(9) << measured << std::setw(10) << median << std::setw(10) << max << std::setw(15)
+        << kind << std::setw(14) << not_computed << '\n';
+  };
+  row("algorithm", "family", "answered", "measured", "median", "max", "kind-mismatch", "not-computed");
+  for (const Algorithm* a : result.algorithms) {
+    if (!a->segment) continue;
+    SegmentTally total;
+    for (const auto& family : result.families) {
+      auto it = result.tallies.find({a->name, family});
+      if (it == result.tallies.end()) continue;
+      const SegmentTally& s = it->second.segment;
+      total.answered += s.answered;
+      total.kind_mismatches += s.kind_mismatches;
+      total.not_computed += s.not_computed;
+      total.errors.insert(total.errors.end(), s.errors.begin(), s.errors.end());
+      row(a->name, family, std::to_string(s.answered), std::to_string(s.errors.size()),
+          short_number(s.median_error()), short_number(s.max_error()), std::to_string(s.kind_mismatches),
+          std::to_string(s.not_computed));
+    }
+    if (result.families.size() > 1)
+      row(a->name, "(all)", std::to_string(total.answered), std::to_string(total.errors.size()),
+          short_number(total.median_error()), short_number(total.max_error()),
+          std::to_string(total.kind_mismatches), std::to_string(total.not_computed));
+  }
+}
 
 void print_check_table(std::ostream& out, const CheckResult& result) {
   std::size_t name_width = 9, family_width = 6;
@@ -95,7 +176,7 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                       const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs) {
   nlohmann::json doc;
-  doc["schema"] = "tritri-check/1";
+  doc["schema"] = "tritri-check/2";
   doc["oracle"] = oracle_description();
   doc["inputs"] = inputs;
   doc["case_count"] = cases.size();
@@ -108,13 +189,29 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
       auto it = result.tallies.find({a->name, family});
       if (it == result.tallies.end()) continue;
       const Tally& t = it->second;
+      nlohmann::json confusion = nullptr;
+      if (a->relation) {
+        confusion = nlohmann::json::array();
+        for (const auto& [key, count] : t.confusion)
+          confusion.push_back({{"answer", key.first}, {"oracle", key.second}, {"count", count}});
+      }
+      nlohmann::json segment = nullptr;
+      if (a->segment)
+        segment = {{"answered", t.segment.answered},
+                   {"measured", t.segment.errors.size()},
+                   {"median_error", number_or_null(t.segment.median_error())},
+                   {"max_error", number_or_null(t.segment.max_error())},
+                   {"kind_mismatches", t.segment.kind_mismatches},
+                   {"not_computed", t.segment.not_computed}};
       doc["tallies"].push_back({{"algorithm", a->name},
                                 {"family", family},
                                 {"cases", t.cases},
                                 {"false_positives", t.false_positives},
                                 {"false_negatives", t.false_negatives},
                                 {"misclassified", a->relation ? nlohmann::json(t.misclassified) : nullptr},
-                                {"unsupported", t.unsupported}});
+                                {"unsupported", t.unsupported},
+                                {"confusion", confusion},
+                                {"segment", segment}});
     }
   doc["failures"] = nlohmann::json::array();
   for (const Failure& f : result.failures) {

@@ -13,12 +13,22 @@ namespace tritri {
 
 void print_check_table(std::ostream& out, const CheckResult& result);
 
+// Per algorithm × family, the relation (or dimension) answered against the oracle's, as
+// "answered->oracle count" cells: only the off-diagonal (wrong) cells, or every cell with
+// `all_cells`. Nothing is printed when no chosen algorithm answers the relation level.
+void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells);
+
+// Per algorithm × family, for algorithms answering the segment level: cases answered, error
+// measured (Hausdorff distance to the exact intersection over the pair's bounding-box diagonal)
+// with its median and maximum, kind mismatches and coplanar contacts given without geometry.
+void print_segment_errors(std::ostream& out, const CheckResult& result);
+
 // Up to `limit` failures, each as a comment line and the case in two paste-ready forms
 // (%.17g and hex float), so it can go straight into a regression case file.
 void print_failures(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                     std::size_t limit);
 
-// The JSON document described in harness/README.md (schema "tritri-check/1").
+// The JSON document described in harness/README.md (schema "tritri-check/2").
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                       const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs);
 

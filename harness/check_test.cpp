@@ -122,3 +122,89 @@ TEST(Baseline, RoundTripsThroughItsFile) {
 
 }  // namespace
 }  // namespace tritri
+
+// ---- relation confusion and segment error (issue 5) ----
+namespace tritri {
+namespace {
+
+RelationAnswer dimension_area(const TrianglePair&) { return {Relation::unknown, Dimension::area}; }
+
+// The exact intersection of cross-pierce, one end moved by 0.5 along the segment's line.
+SegmentAnswer pierce_segment_off(const TrianglePair&) {
+  SegmentAnswer s;
+  s.kind = SegmentKind::segment;
+  s.p = {1, 0, 0};
+  s.q = {1, 1.5, 0};  // exact: (1,0,0)–(1,1,0)
+  return s;
+}
+
+TEST(CheckScoring, ConfusionCountsEveryCaseOnceInItsCell) {
+  Algorithm cross = fake("cross", nullptr, relation_batch<&always_cross>);
+  CheckResult r;
+  r.algorithms = {&cross};
+  score(cross, cases(), labels(), answer_cases(cross, cases()), r);
+  std::size_t cells = 0, diagonal = 0, scored = 0;
+  for (const auto& [key, tally] : r.tallies) {
+    scored += tally.cases - tally.unsupported;
+    for (const auto& [cell, count] : tally.confusion) {
+      EXPECT_EQ(cell.first, "cross");
+      cells += count;
+      if (cell.second == "cross") diagonal += count;
+    }
+  }
+  EXPECT_EQ(cells, scored);
+  EXPECT_EQ(diagonal, 5u);  // the built-in cross cases
+  EXPECT_EQ(total(r, "cross").misclassified, scored - diagonal);
+}
+
+TEST(CheckScoring, DimensionOnlyAnswersAreConfusedByDimension) {
+  Algorithm area = fake("area", nullptr, relation_batch<&dimension_area>);
+  CheckResult r;
+  r.algorithms = {&area};
+  score(area, cases(), labels(), answer_cases(area, cases()), r);
+  const Tally& t = r.tallies.at({"area", "parallel"});
+  EXPECT_EQ(t.confusion.at({"dim:area", "dim:none"}), 5u);
+}
+
+TEST(CheckScoring, SegmentErrorIsRelativeHausdorffAndKindsAreCompared) {
+  Algorithm seg;
+  seg.name = "seg";
+  seg.segment = segment_batch<&pierce_segment_off>;
+  std::vector<Case> one;
+  for (const Case& c : cases())
+    if (c.name == "cross-pierce" || c.name == "disjoint-above") one.push_back(c);
+  ASSERT_EQ(one.size(), 2u);
+  const auto oracle = label_cases(one);
+  CheckResult r;
+  r.algorithms = {&seg};
+  score(seg, one, oracle, answer_cases(seg, one), r);
+  const SegmentTally& s = r.tallies.at({"seg", "general"}).segment;
+  EXPECT_EQ(s.answered, 2u);
+  EXPECT_EQ(s.kind_mismatches, 1u);  // a segment where the oracle has nothing
+  ASSERT_EQ(s.errors.size(), 1u);
+  const double exact_pierce_error = 0.5 / pair_size(one[1].pair);  // one[1] is cross-pierce
+  EXPECT_NEAR(s.errors[0], exact_pierce_error, 1e-15);
+  // Overlap is derived from the segment answer when it is the only level.
+  EXPECT_EQ(r.tallies.at({"seg", "general"}).false_positives, 1u);
+}
+
+TEST(CheckScoring, HausdorffBetweenSegmentsAndPoints) {
+  const Vec3<double> o(0, 0, 0), x(1, 0, 0), y(0, 1, 0);
+  EXPECT_EQ(hausdorff_distance(o, x, o, x), 0.0);
+  EXPECT_EQ(hausdorff_distance(x, o, o, x), 0.0);          // orientation does not matter
+  EXPECT_DOUBLE_EQ(hausdorff_distance(o, o, o, x), 1.0);   // a point against a segment
+  EXPECT_DOUBLE_EQ(hausdorff_distance(o, x, y, y), std::sqrt(2.0));
+}
+
+TEST(CheckScoring, JsonHasSchemaTwoWithConfusionAndSegment) {
+  Algorithm cross = fake("cross", nullptr, relation_batch<&always_cross>);
+  const CheckResult r = run_check({&cross}, cases(), labels());
+  std::ostringstream out;
+  write_check_json(out, r, cases(), labels(), {"builtin"});
+  EXPECT_NE(out.str().find("\"tritri-check/2\""), std::string::npos);
+  EXPECT_NE(out.str().find("\"confusion\""), std::string::npos);
+  EXPECT_NE(out.str().find("\"segment\": null"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tritri

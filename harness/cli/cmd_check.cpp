@@ -26,24 +26,33 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
 
 int run_check(int argc, char** argv) {
   Args args(argc, argv, {"--algo", "--json", "--baseline", "--write-baseline", "--max-failures"},
-            {"--quiet"});
+            {"--quiet", "--confusion"});
   if (args.help()) {
     std::cout
         << "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
-           "                    [--write-baseline FILE] [--max-failures N] [--quiet] FILE...\n\n"
+           "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
+           "                    FILE...\n\n"
            "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
            "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
            "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
            "relation (misclassified relation, '-' when not answered) and unsupported (declined, or\n"
            "degenerate input the algorithm does not accept). Then the first N disagreements\n"
            "(default 20), each paste-ready as a case line in %.17g and in hex float.\n\n"
+           "For algorithms that answer the relation level, a confusion table follows: per algorithm\n"
+           "x family, 'answered->oracle count' for every wrong cell (relation names, or dim:<d> for\n"
+           "an algorithm that states only the dimension). For algorithms that answer the segment\n"
+           "level, a segment table: cases answered, errors measured (Hausdorff distance between the\n"
+           "answered and the exact point or segment, over the pair's bounding-box diagonal), their\n"
+           "median and max, kind mismatches (answered empty/point/segment/area where the exact\n"
+           "intersection has another dimension) and coplanar contacts answered without geometry.\n\n"
            "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'\n"
            "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
            "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
            "                       is new; list the recorded ones that no longer occur\n"
            "  --write-baseline F   record this run's disagreements as a baseline\n"
            "  --max-failures N     how many disagreements to print (default 20)\n"
-           "  --quiet              print only the table (and the baseline comparison)\n\n"
+           "  --confusion          print every confusion cell, the right ones too\n"
+           "  --quiet              print only the tables (and the baseline comparison)\n\n"
            "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
            "bad arguments or input.\n";
     return kOk;
@@ -61,6 +70,8 @@ int run_check(int argc, char** argv) {
   const CheckResult result = run_check(algorithms, cases, oracle);
 
   print_check_table(std::cout, result);
+  print_confusion(std::cout, result, args.flag("--confusion"));
+  print_segment_errors(std::cout, result);
   if (!args.flag("--quiet") && !result.failures.empty()) {
     std::cout << '\n';
     print_failures(std::cout, result, cases, max_failures);

@@ -1,0 +1,32 @@
+// The floor's only promises: it reads every coordinate (each one can flip the answer), and it
+// is deterministic.
+#include "null.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tritri::null_floor {
+namespace {
+
+TEST(Null, EveryCoordinateCanChangeTheAnswer) {
+  const Triangle zero{{Vec3<double>::Zero(), Vec3<double>::Zero(), Vec3<double>::Zero()}};
+  const TrianglePair pair{zero, zero};
+  for (int t = 0; t < 2; ++t)
+    for (int v = 0; v < 3; ++v)
+      for (int c = 0; c < 3; ++c) {
+        TrianglePair p = pair;  // all zero: the sum is 0, not negative
+        EXPECT_FALSE(overlap(p));
+        (t == 0 ? p.t1 : p.t2)[v][c] = -1.0;
+        EXPECT_TRUE(overlap(p)) << t << ' ' << v << ' ' << c;
+      }
+}
+
+TEST(Null, FloatAndDoubleAgreeOnSmallIntegers) {
+  const Triangle t1{{Vec3<double>(1, 2, 3), Vec3<double>(4, 5, 6), Vec3<double>(7, 8, -50)}};
+  const Triangle t2{{Vec3<double>(1, 1, 1), Vec3<double>(0, 0, 0), Vec3<double>(2, 2, 2)}};
+  const TrianglePair p{t1, t2};
+  EXPECT_EQ(overlap(p), overlap(cast<float>(p)));
+  EXPECT_TRUE(overlap(p));  // 36 - 50 + 9 - ... = the sum is -5
+}
+
+}  // namespace
+}  // namespace tritri::null_floor

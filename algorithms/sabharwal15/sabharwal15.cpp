@@ -1,0 +1,48 @@
+#include "sabharwal15.hpp"
+
+#include "tritri/algorithm.hpp"
+
+namespace tritri {
+namespace {
+
+constexpr const char* kCitation =
+    "Chaman L. Sabharwal, Jennifer L. Leopold. A Triangle-Triangle Intersection Algorithm. In "
+    "D. C. Wyld et al. (eds.), WiMo, ITCSE, ICAIT, NC 2015, Computer Science & Information "
+    "Technology (CS & IT), pp. 27-35, 2015. doi:10.5121/csit.2015.51003";
+
+Algorithm entry(std::string name, std::string summary) {
+  Algorithm a;
+  a.name = std::move(name);
+  a.citation = kCitation;
+  a.summary = std::move(summary);
+  a.boundary = Boundary::closed;  // 0 ≤ u, v, s, t and u + v, s + t ≤ 1: closed triangles
+  a.accepts_degenerate = false;   // δ = |U×V|² = 0 divides
+  return a;
+}
+
+}  // namespace
+
+void register_sabharwal15(Registry& registry) {
+  using namespace sabharwal15;
+  Algorithm published = entry(
+      "sabharwal15",
+      "§3 as published: (s,t) inequalities and none/point/segment/area by float equality "
+      "(decides overlap of T2's projection onto T1's plane, not intersection)");
+  published.relation = relation_batch<&published_relation<double>>;
+  published.segment = segment_batch<&published_segment<double>>;
+  published.relation_float = relation_batch<&published_relation<float>>;
+  published.segment_float = segment_batch<&published_segment<float>>;
+  registry.add(std::move(published));
+
+  Algorithm plane = entry(
+      "sabharwal15-plane",
+      "§3 plus the dropped equation N·AP + s N·S + t N·T = 0: one interval when the planes cross, "
+      "the published system when coplanar");
+  plane.relation = relation_batch<&plane_relation<double>>;
+  plane.segment = segment_batch<&plane_segment<double>>;
+  plane.relation_float = relation_batch<&plane_relation<float>>;
+  plane.segment_float = segment_batch<&plane_segment<float>>;
+  registry.add(std::move(plane));
+}
+
+}  // namespace tritri
