@@ -1,0 +1,25 @@
+#include "brute.hpp"
+
+#include "tritri/algorithm.hpp"
+
+namespace tritri {
+
+void register_brute(Registry& registry) {
+  Algorithm a;
+  a.name = "brute";
+  a.citation =
+      "The brute-force baseline of Tomas Moller, A Fast Triangle-Triangle Intersection Test, journal "
+      "of graphics tools 2(2):25-30, 1997 (footnote 1); segment test after Tomas Moller, Ben "
+      "Trumbore, Fast, Minimum Storage Ray-Triangle Intersection, journal of graphics tools "
+      "2(1):21-28, 1997";
+  a.summary =
+      "six closed edge-vs-triangle tests (Moller-Trumbore, edges parallel to the other plane skipped), "
+      "Moller's coplanar test when the planes are parallel";
+  a.boundary = Boundary::closed;
+  a.accepts_degenerate = false;  // tolerance: none, exact-zero determinant test
+  a.overlap = overlap_batch<&brute::overlap<double>>;
+  a.overlap_float = overlap_batch<&brute::overlap<float>>;
+  registry.add(std::move(a));
+}
+
+}  // namespace tritri

@@ -1,0 +1,44 @@
+#include "tropp06.hpp"
+
+#include "tritri/algorithm.hpp"
+
+namespace tritri {
+namespace {
+
+constexpr const char* kCitation =
+    "Oren Tropp, Ayellet Tal, Ilan Shimshoni. A fast triangle to triangle intersection test for "
+    "collision detection. Computer Animation and Virtual Worlds 17(5):527-535, 2006. doi:10.1002/cav.115";
+
+Algorithm entry(std::string name, std::string summary) {
+  Algorithm a;
+  a.name = std::move(name);
+  a.citation = kCitation;
+  a.summary = std::move(summary);
+  a.boundary = Boundary::closed;
+  a.accepts_degenerate = false;  // tolerance: none, every comparison is against zero
+  return a;
+}
+
+}  // namespace
+
+void register_tropp06(Registry& registry) {
+  using tropp06::Projection;
+  Algorithm published = entry(
+      "tropp06",
+      "the published routine: Cramer's rule with shared minors, division-free, 2-D step in x-y, "
+      "edge vectors computed inside the call");
+  published.overlap = overlap_batch<&tropp06::overlap<double, Projection::xy, false>>;
+  published.overlap_float = overlap_batch<&tropp06::overlap<float, Projection::xy, false>>;
+  registry.add(std::move(published));
+
+  Algorithm fixed = entry(
+      "tropp06-fixed",
+      "corrected: 2-D step in the projection dropping N_A's largest component (x-y fails when A contains "
+      "the z direction); D1 on plane A cut along Q1,Q3; a point cut tested as a point; a cut line "
+      "through C1 tested against edge 3");
+  fixed.overlap = overlap_batch<&tropp06::overlap<double, Projection::dominant, true>>;
+  fixed.overlap_float = overlap_batch<&tropp06::overlap<float, Projection::dominant, true>>;
+  registry.add(std::move(fixed));
+}
+
+}  // namespace tritri

@@ -1,0 +1,171 @@
+// Tropp–Tal–Shimshoni 2006: the scaled cut segment, the 2-D step and its edge-pair codes, the
+// answers in general position, and the two defects of the published routine.
+#include "tropp06.hpp"
+
+#include "casefile.hpp"
+#include "oracle/oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace tritri::tropp06 {
+namespace {
+
+Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
+const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
+const Triangle kWall = tri({0, 0, 0}, {4, 0, 0}, {0, 0, 4});  // plane y = 0: contains the z axis
+
+std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
+
+// The cut segment's endpoints, unscaled, in world coordinates.
+std::pair<Vec3<double>, Vec3<double>> endpoints(const TrianglePair& p) {
+  const auto& c1 = p.t1[0];
+  const auto cs = cut_segment<double>(c1, p.t1[1] - c1, p.t1[2] - c1, p.t2[0], p.t2[1] - p.t2[0], p.t2[2] - p.t2[0]);
+  EXPECT_EQ(cs.kind, CutSegment<double>::Kind::segment);
+  const Vec3<double> a = c1 + cs.start / cs.sf;
+  return {a, a + cs.direction / cs.sf};
+}
+
+bool same_segment(std::pair<Vec3<double>, Vec3<double>> s, Vec3<double> a, Vec3<double> b) {
+  return ((s.first - a).norm() < 1e-12 && (s.second - b).norm() < 1e-12) ||
+         ((s.first - b).norm() < 1e-12 && (s.second - a).norm() < 1e-12);
+}
+
+TEST(Tropp06Pieces, CutSegmentForEachPairOfCrossedEdges) {
+  // D1 alone below: edges Q1 and Q2 cross
+  EXPECT_TRUE(same_segment(endpoints({kFloor, tri({1, 1, -1}, {3, 1, 1}, {1, 3, 1})}), {2, 1, 0}, {1, 2, 0}));
+  // D1 + Q1 alone below: edges Q1 and Q3
+  EXPECT_TRUE(same_segment(endpoints({kFloor, tri({3, 1, 1}, {1, 1, -1}, {1, 3, 1})}), {2, 1, 0}, {1, 2, 0}));
+  // D1 + Q2 alone below: edges Q2 and Q3
+  EXPECT_TRUE(same_segment(endpoints({kFloor, tri({3, 1, 1}, {1, 3, 1}, {1, 1, -1})}), {2, 1, 0}, {1, 2, 0}));
+}
+
+TEST(Tropp06Pieces, CutSegmentClassifiesParallelCoplanarAndRejected) {
+  using Kind = CutSegment<double>::Kind;
+  auto kind = [](const Triangle& a, const Triangle& b) {
+    return cut_segment<double>(a[0], a[1] - a[0], a[2] - a[0], b[0], b[1] - b[0], b[2] - b[0]).kind;
+  };
+  EXPECT_EQ(kind(kFloor, tri({0, 0, 1}, {4, 0, 1}, {0, 4, 1})), Kind::parallel);
+  EXPECT_EQ(kind(kFloor, tri({1, 1, 0}, {5, 1, 0}, {1, 5, 0})), Kind::coplanar);
+  EXPECT_EQ(kind(kFloor, tri({0, 0, 2}, {4, 0, 3}, {0, 4, 5})), Kind::rejected);
+}
+
+TEST(Tropp06Pieces, EdgePairCodesName2DCrossings) {
+  using V = Vec2<double>;
+  const V p1{4, 0}, p2{0, 4};  // A = (0,0), (4,0), (0,4); edge 1 along p1, 2 along p2, 3 between
+  // a horizontal line y = 1 crosses edges 2 (x = 0) and 3 (the hypotenuse)
+  EXPECT_EQ(segment_vs_triangle_2d(p1, p2, V{-1, 1}, V{6, 0}), kEdges23);
+  // a vertical line x = 1 crosses edges 1 and 3
+  EXPECT_EQ(segment_vs_triangle_2d(p1, p2, V{1, -1}, V{0, 6}), kEdges13);
+  // a line x + y = 1... through edges 1 and 2
+  EXPECT_EQ(segment_vs_triangle_2d(p1, p2, V{2, -1}, V{-3, 3}), kEdges12);
+  // the line crosses A, the segment stops short of it
+  EXPECT_EQ(segment_vs_triangle_2d(p1, p2, V{-3, 1}, V{1, 0}), kDisjoint);
+  // the segment lies inside A: both crossings beyond its ends, on either side
+  EXPECT_EQ(segment_vs_triangle_2d(p1, p2, V{1, 1}, V{0.5, 0}), kEdges23);
+  // the line misses A
+  EXPECT_EQ(segment_vs_triangle_2d(p1, p2, V{-1, 5}, V{6, 0}), kDisjoint);
+}
+
+TEST(Tropp06, IntersectReturnsTheEdgePairOfTheFirstTriangle) {
+  // B's cut lies along y = 1 from x = -1 to x = 1: its line crosses A's edges 2 (x = 0) and 3
+  EXPECT_EQ(intersect<double>({kFloor, tri({-1, 1, -1}, {-1, 1, 1}, {3, 1, 1})}), kEdges23);
+  EXPECT_EQ(intersect<double>({kFloor, tri({0, 0, 2}, {4, 0, 3}, {0, 4, 5})}), kDisjoint);
+  EXPECT_EQ(intersect<double>({kFloor, tri({1, 1, 0}, {5, 1, 0}, {1, 5, 0})}), kCoplanar);
+}
+
+// Whether the published x–y step can see plane A at all (defect 1 below).
+bool a_projects_onto_xy(const TrianglePair& p) { return (p.t1[1] - p.t1[0]).cross(p.t1[2] - p.t1[0])[2] != 0; }
+
+TEST(Tropp06, GeneralBuiltinCasesAgreeWithTheOracle) {
+  int vertical = 0;
+  for (const auto& c : builtin_cases()) {
+    if (c.family() != "general") continue;
+    const bool truth = oracle_label(c.pair).overlap;
+    for (const TrianglePair& p : {c.pair, swapped(c.pair)}) {
+      EXPECT_EQ((overlap<double, Projection::dominant, true>(p)), truth) << c.name << " (fixed)";
+      if (a_projects_onto_xy(p)) {
+        EXPECT_EQ(overlap<double>(p), truth) << c.name;
+      } else {
+        // swapped cross-pierce (A in x = 1: a miss) and swapped disjoint-interval (A in x = 2)
+        ++vertical;
+        EXPECT_FALSE(overlap<double>(p)) << c.name;
+      }
+    }
+  }
+  EXPECT_EQ(vertical, 2);
+}
+
+TEST(Tropp06, RandomGeneralPositionPairsAgreeWithTheOracle) {
+  std::mt19937 rng(2006);
+  std::uniform_real_distribution<double> coord(-1, 1);
+  int checked = 0, overlapping = 0;
+  for (int n = 0; n < 3000; ++n) {
+    TrianglePair p;
+    for (auto* t : {&p.t1, &p.t2})
+      for (int i = 0; i < 3; ++i) (*t)[i] = Vec3<double>(coord(rng), coord(rng), coord(rng));
+    const OracleRecord truth = oracle_label(p);
+    if (truth.relation != Relation::disjoint && truth.relation != Relation::cross) continue;
+    ++checked;
+    overlapping += truth.overlap;
+    ASSERT_EQ(overlap<double>(p), truth.overlap) << format_case({"r", p, {}, "", 0}, NumberStyle::hex);
+    ASSERT_EQ((overlap<double, Projection::dominant, true>(p)), truth.overlap);
+  }
+  EXPECT_GT(checked, 2900);
+  EXPECT_GT(overlapping, 100);
+}
+
+// Published defect 1: the 2-D step in x–y. With A in the plane y = 0 every 2-D cross product
+// vanishes: a plain crossing is reported disjoint.
+TEST(Tropp06Defects, VerticalPlaneAIsReportedDisjoint) {
+  const TrianglePair crossing{kWall, tri({1, -1, 1}, {1, 1, 1}, {2, 1, 1})};
+  ASSERT_EQ(oracle_label(crossing).relation, Relation::cross);
+  EXPECT_EQ(intersect<double>(crossing), kDisjoint);
+  EXPECT_NE((intersect<double, Projection::dominant, false>(crossing)), kDisjoint);
+  // the same pair turned so that A is not vertical is found by the published routine
+  const TrianglePair turned{kFloor, tri({1, 1, -1}, {1, 1, 1}, {2, 1, 1})};
+  ASSERT_EQ(oracle_label(turned).relation, Relation::cross);
+  EXPECT_NE(intersect<double>(turned), kDisjoint);
+}
+
+// Published defect 2: B touching plane A in one vertex gives a zero-length cut, and the 2-D step
+// never finds a zero direction legal.
+TEST(Tropp06Defects, SingleVertexContactIsReportedDisjoint) {
+  for (const Triangle& b : {tri({1, 1, 0}, {1, 1, 3}, {3, 2, 3}),    // D1 on A's face
+                            tri({1, 1, 3}, {1, 1, 0}, {3, 2, 3}),    // D1 + Q1 on it
+                            tri({1, 1, 3}, {3, 2, 3}, {1, 1, 0})}) { // D1 + Q2 on it
+    const TrianglePair p{kFloor, b};
+    ASSERT_EQ(oracle_label(p).relation, Relation::touch_point);
+    EXPECT_EQ(intersect<double>(p), kDisjoint);
+    EXPECT_EQ((intersect<double, Projection::dominant, true>(p)), kVertex);
+  }
+  // D1 on plane A, outside A, with B straddling the plane: the true cut runs from D1 to edge
+  // Q3's crossing, (−1,1,0) → (3,1,0), and crosses A
+  const TrianglePair straddling{kFloor, tri({-1, 1, 0}, {3, 1, 2}, {3, 1, -2})};
+  ASSERT_EQ(oracle_label(straddling).relation, Relation::cross);
+  EXPECT_EQ(intersect<double>(straddling), kDisjoint);
+  EXPECT_NE((intersect<double, Projection::dominant, true>(straddling)), kDisjoint);
+  // and the fixed variant still rejects a vertex on A's plane but outside A
+  EXPECT_EQ((intersect<double, Projection::dominant, true>({kFloor, tri({5, 5, 0}, {5, 5, 3}, {6, 5, 3})})),
+            kDisjoint);
+}
+
+// Published defect 3: a cut line through A's vertex C1 makes edges 1 and 2 both legal at C1,
+// and the segment is compared with that point only. B's cut runs from (1,1,0) to (1.5,1.5,0),
+// on the line x = y through C1 = (0,0,0), inside A.
+TEST(Tropp06Defects, CutLineThroughC1IsComparedWithC1Only) {
+  const TrianglePair p{kFloor, tri({1, 1, -1}, {1, 1, 1}, {2, 2, 1})};
+  ASSERT_EQ(oracle_label(p).relation, Relation::cross);
+  EXPECT_EQ(intersect<double>(p), kDisjoint);
+  EXPECT_EQ((intersect<double, Projection::dominant, true>(p)), kEdges13);
+  // the same segment with A's vertices rotated (C1 no longer on the line) is found
+  EXPECT_NE(intersect<double>({tri({4, 0, 0}, {0, 4, 0}, {0, 0, 0}), p.t2}), kDisjoint);
+  // a line through C1 that only touches A there: still one point, and it is on the segment
+  const TrianglePair touching{kFloor, tri({-1, 1, -1}, {-1, 1, 1}, {1, -1, 1})};
+  ASSERT_TRUE(oracle_label(touching).overlap);
+  EXPECT_NE((intersect<double, Projection::dominant, true>(touching)), kDisjoint);
+}
+
+}  // namespace
+}  // namespace tritri::tropp06
