@@ -17,10 +17,10 @@
 //   ones always look coplanar. Snap = false is the same test with every comparison exact-zero.
 // - Coplanar (all three distances of T1 zero after the snap): project onto the axis plane that
 //   drops the largest component of N1; the 9 edge pairs with the segment test of Antonio
-//   (Graphics Gems III), then a strict point-in-triangle test of one vertex each way. Collinear
-//   overlapping edges are not detected by that edge test (its denominator is zero), and the
-//   point test is strict, so coplanar triangles touching along collinear edges are missed:
-//   the paper's behaviour, kept.
+//   (Graphics Gems III), then a strict point-in-triangle test of one vertex each way. The edge
+//   test never reports a collinear pair (its denominator is zero), but that loses no contact:
+//   where collinear edges overlap, an edge adjacent to one of them starts at the end of the
+//   shared stretch and meets the other edge there, endpoints counting.
 // - Degenerate (zero-area) triangles: not handled by the paper; the harness does not pass them.
 #pragma once
 
