@@ -1,5 +1,7 @@
 #include "check.hpp"
 
+#include "process_plugin.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
@@ -141,9 +143,10 @@ std::vector<OracleRecord> label_cases(const std::vector<Case>& cases) {
   return records;
 }
 
-std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases) {
+std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases,
+                                  const IsolationOptions& isolation) {
   std::vector<Answers> answers(cases.size());
-  // Only the pairs the algorithm accepts are handed to it, in one contiguous batch per level.
+  // Only the pairs the algorithm accepts are handed to it, in contiguous batches.
   std::vector<std::size_t> index;
   std::vector<TrianglePair> pairs;
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -154,20 +157,41 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
     index.push_back(i);
     pairs.push_back(cases[i].pair);
   }
-  if (algorithm.overlap) {
-    std::vector<Overlap> out(pairs.size());
-    algorithm.overlap(pairs.data(), pairs.size(), out.data());
-    for (std::size_t k = 0; k < index.size(); ++k) answers[index[k]].overlap = out[k];
+  auto record_faults = [&](const std::vector<Fault>& faults) {
+    for (const Fault& f : faults) {
+      answers[index[f.index]].fate = f.fate;
+      answers[index[f.index]].fault = f.detail;
+    }
+  };
+
+  if (algorithm.process) {
+    std::vector<std::string> names;
+    for (std::size_t i : index) names.push_back(cases[i].name);
+    const ProcessAnswers got = run_process_plugin(
+        {algorithm.process->command, algorithm.process->timeout_seconds}, names, pairs);
+    for (std::size_t k = 0; k < index.size(); ++k) {
+      answers[index[k]].overlap = got.overlap[k];
+      answers[index[k]].relation = got.relation[k];
+    }
+    record_faults(got.faults);
+    return answers;
   }
-  if (algorithm.relation) {
-    std::vector<RelationAnswer> out(pairs.size());
-    algorithm.relation(pairs.data(), pairs.size(), out.data());
-    for (std::size_t k = 0; k < index.size(); ++k) answers[index[k]].relation = out[k];
-  }
-  if (algorithm.segment) {
-    std::vector<SegmentAnswer> out(pairs.size());
-    algorithm.segment(pairs.data(), pairs.size(), out.data());
-    for (std::size_t k = 0; k < index.size(); ++k) answers[index[k]].segment = out[k];
+
+  // The answers are written to memory shared with the child that computes them.
+  SharedArray<Overlap> overlap(algorithm.overlap ? pairs.size() : 0);
+  SharedArray<RelationAnswer> relation(algorithm.relation ? pairs.size() : 0);
+  SharedArray<SegmentAnswer> segment(algorithm.segment ? pairs.size() : 0);
+  record_faults(run_isolated(pairs.size(), [&](std::size_t begin, std::size_t end) {
+    const TrianglePair* batch = pairs.data() + begin;
+    if (algorithm.overlap) algorithm.overlap(batch, end - begin, overlap.data() + begin);
+    if (algorithm.relation) algorithm.relation(batch, end - begin, relation.data() + begin);
+    if (algorithm.segment) algorithm.segment(batch, end - begin, segment.data() + begin);
+  }, isolation));
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    if (answers[index[k]].fate != Fate::ok) continue;
+    if (algorithm.overlap) answers[index[k]].overlap = overlap[k];
+    if (algorithm.relation) answers[index[k]].relation = relation[k];
+    if (algorithm.segment) answers[index[k]].segment = segment[k];
   }
   return answers;
 }
@@ -188,18 +212,23 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
       continue;
     }
     auto fail = [&](Level level, std::string answer, std::string expected) {
-      result.failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected)});
+      result.failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected), ""});
     };
+    if (a.fate != Fate::ok) {
+      ++(a.fate == Fate::crash ? tally.crashes : tally.timeouts);
+      result.failures.push_back({algorithm.name, i, Level::overlap, to_string(a.fate), overlap_word(truth.overlap), a.fault});
+      continue;
+    }
 
     // Overlap: from the overlap level, else derived from the relation the algorithm gave, else
     // from its segment answer.
     Overlap overlap = a.overlap;
-    if (!algorithm.overlap && !algorithm.relation && algorithm.segment) {
+    if (!algorithm.answers(Level::overlap) && !algorithm.answers(Level::relation) && algorithm.answers(Level::segment)) {
       overlap = a.segment.kind == SegmentKind::unsupported ? Overlap::unsupported
                 : a.segment.kind == SegmentKind::empty    ? Overlap::no
                                                           : Overlap::yes;
     }
-    if (!algorithm.overlap && algorithm.relation) {
+    if (!algorithm.answers(Level::overlap) && algorithm.answers(Level::relation)) {
       const Dimension d = a.relation.relation == Relation::unknown ? a.relation.dimension
                                                                     : dimension_of(a.relation.relation);
       overlap = a.relation.relation == Relation::unsupported || d == Dimension::unknown
@@ -214,7 +243,7 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
       if (said != truth.overlap) fail(Level::overlap, overlap_word(said), overlap_word(truth.overlap));
     }
 
-    if (algorithm.relation) {
+    if (algorithm.answers(Level::relation)) {
       const RelationAnswer& r = a.relation;
       if (r.relation == Relation::unsupported) {
         unsupported = true;
@@ -233,7 +262,7 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
         }
       }
     }
-    if (algorithm.segment) score_segment(a.segment, cases[i].pair, truth, tally.segment);
+    if (algorithm.answers(Level::segment)) score_segment(a.segment, cases[i].pair, truth, tally.segment);
     if (unsupported) {
       ++tally.unsupported;
       fail(Level::overlap, "unsupported", overlap_word(truth.overlap));
@@ -242,7 +271,7 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
 }
 
 CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle) {
+                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation) {
   CheckResult result;
   result.algorithms = algorithms;
   for (const auto& c : cases) {
@@ -251,7 +280,7 @@ CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std
       result.families.push_back(family);
   }
   for (const Algorithm* algorithm : algorithms)
-    score(*algorithm, cases, oracle, answer_cases(*algorithm, cases), result);
+    score(*algorithm, cases, oracle, answer_cases(*algorithm, cases, isolation), result);
   return result;
 }
 

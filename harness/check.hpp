@@ -2,6 +2,7 @@
 #pragma once
 
 #include "casefile.hpp"
+#include "isolation.hpp"
 #include "oracle/oracle.hpp"
 #include "tritri/algorithm.hpp"
 
@@ -18,6 +19,8 @@ std::vector<OracleRecord> label_cases(const std::vector<Case>& cases);
 // One algorithm's answers to one case, at every level it serves.
 struct Answers {
   bool declined = false;  // the harness did not call it: a degenerate case it does not accept
+  Fate fate = Fate::ok;   // crash or timeout: the algorithm died or hung on this case
+  std::string fault;      // what happened: "SIGSEGV", "no progress for 2 s", ...
   Overlap overlap = Overlap::unsupported;
   RelationAnswer relation;
   SegmentAnswer segment;
@@ -25,7 +28,10 @@ struct Answers {
 
 // Runs one algorithm on every case through its batch entry points. Degenerate cases are passed
 // only to algorithms that accept them.
-std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases);
+// Built-in and shared-library algorithms run in a child process (isolation.hpp) unless
+// isolation is switched off: a crash or hang becomes that case's fate, and the rest is kept.
+std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases,
+                                  const IsolationOptions& isolation = {});
 
 // A disagreement with the oracle. `answer` and `expected` are the vocabulary's words.
 struct Failure {
@@ -34,6 +40,7 @@ struct Failure {
   Level level = Level::overlap;
   std::string answer;
   std::string expected;
+  std::string detail;  // for a crash or timeout: what happened
 };
 
 // The segment level against the exact intersection, for algorithms that answer it.
@@ -59,6 +66,8 @@ struct Tally {
   std::size_t false_negatives = 0;  // overlap 0 where the oracle says 1
   std::size_t misclassified = 0;    // relation (or dimension) differs from the oracle's
   std::size_t unsupported = 0;      // declined by the algorithm or, for degenerate input, the harness
+  std::size_t crashes = 0;          // the algorithm crashed (signal, exception) on the case
+  std::size_t timeouts = 0;         // the algorithm made no progress within the time limit
   Confusion confusion;              // relation level only; every scored case, diagonal included
   SegmentTally segment;             // segment level only
 };
@@ -83,6 +92,6 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            CheckResult& result);
 
 CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle);
+                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation = {});
 
 }  // namespace tritri

@@ -126,13 +126,13 @@ void print_check_table(std::ostream& out, const CheckResult& result) {
   for (const auto& f : result.families) family_width = std::max(family_width, f.size());
   auto row = [&](const std::string& algorithm, const std::string& family, const std::string& cases,
                  const std::string& fp, const std::string& fn, const std::string& rel,
-                 const std::string& unsupported) {
+                 const std::string& unsupported, const std::string& crash, const std::string& timeout) {
     out << std::left << std::setw(static_cast<int>(name_width)) << algorithm << "  "
         << std::setw(static_cast<int>(family_width)) << family << std::right << std::setw(8) << cases
         << std::setw(7) << fp << std::setw(7) << fn << std::setw(10) << rel << std::setw(13)
-        << unsupported << '\n';
+        << unsupported << std::setw(7) << crash << std::setw(9) << timeout << '\n';
   };
-  row("algorithm", "family", "cases", "FP", "FN", "relation", "unsupported");
+  row("algorithm", "family", "cases", "FP", "FN", "relation", "unsupported", "crash", "timeout");
   for (const Algorithm* a : result.algorithms) {
     Tally total;
     for (const auto& family : result.families) {
@@ -144,14 +144,16 @@ void print_check_table(std::ostream& out, const CheckResult& result) {
       total.false_negatives += t.false_negatives;
       total.misclassified += t.misclassified;
       total.unsupported += t.unsupported;
+      total.crashes += t.crashes;
+      total.timeouts += t.timeouts;
       row(a->name, family, std::to_string(t.cases), std::to_string(t.false_positives),
-          std::to_string(t.false_negatives), a->relation ? std::to_string(t.misclassified) : "-",
-          std::to_string(t.unsupported));
+          std::to_string(t.false_negatives), a->answers(Level::relation) ? std::to_string(t.misclassified) : "-",
+          std::to_string(t.unsupported), std::to_string(t.crashes), std::to_string(t.timeouts));
     }
     if (result.families.size() > 1)
       row(a->name, "(all)", std::to_string(total.cases), std::to_string(total.false_positives),
-          std::to_string(total.false_negatives), a->relation ? std::to_string(total.misclassified) : "-",
-          std::to_string(total.unsupported));
+          std::to_string(total.false_negatives), a->answers(Level::relation) ? std::to_string(total.misclassified) : "-",
+          std::to_string(total.unsupported), std::to_string(total.crashes), std::to_string(total.timeouts));
   }
 }
 
@@ -165,8 +167,12 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
       break;
     }
     const Case& c = cases[f.case_index];
-    out << "# " << f.algorithm << ' ' << to_string(f.level) << ": answered " << f.answer
-        << ", oracle " << f.expected << "   (" << c.source << ':' << c.line << ")\n";
+    if (f.detail.empty())
+      out << "# " << f.algorithm << ' ' << to_string(f.level) << ": answered " << f.answer << ", oracle "
+          << f.expected << "   (" << c.source << ':' << c.line << ")\n";
+    else
+      out << "# " << f.algorithm << ": " << f.answer << " (" << f.detail << ") on this case   (" << c.source
+          << ':' << c.line << ")\n";
     out << format_case(c, NumberStyle::g17) << '\n';
     out << format_case(c, NumberStyle::hex) << '\n';
     ++shown;
@@ -190,13 +196,13 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
       if (it == result.tallies.end()) continue;
       const Tally& t = it->second;
       nlohmann::json confusion = nullptr;
-      if (a->relation) {
+      if (a->answers(Level::relation)) {
         confusion = nlohmann::json::array();
         for (const auto& [key, count] : t.confusion)
           confusion.push_back({{"answer", key.first}, {"oracle", key.second}, {"count", count}});
       }
       nlohmann::json segment = nullptr;
-      if (a->segment)
+      if (a->answers(Level::segment))
         segment = {{"answered", t.segment.answered},
                    {"measured", t.segment.errors.size()},
                    {"median_error", number_or_null(t.segment.median_error())},
@@ -208,8 +214,10 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
                                 {"cases", t.cases},
                                 {"false_positives", t.false_positives},
                                 {"false_negatives", t.false_negatives},
-                                {"misclassified", a->relation ? nlohmann::json(t.misclassified) : nullptr},
+                                {"misclassified", a->answers(Level::relation) ? nlohmann::json(t.misclassified) : nullptr},
                                 {"unsupported", t.unsupported},
+                                {"crashes", t.crashes},
+                                {"timeouts", t.timeouts},
                                 {"confusion", confusion},
                                 {"segment", segment}});
     }
@@ -222,6 +230,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
                                {"level", std::string(to_string(f.level))},
                                {"answer", f.answer},
                                {"oracle", f.expected},
+                               {"detail", f.detail},
                                {"oracle_relation", std::string(to_string(oracle[f.case_index].relation))},
                                {"line", format_case(c)}});
   }

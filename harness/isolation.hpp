@@ -37,11 +37,12 @@ struct IsolationOptions {
 std::vector<Fault> run_isolated(std::size_t n, const std::function<void(std::size_t, std::size_t)>& work,
                                 const IsolationOptions& options = {});
 
-// A fixed-size array of trivially copyable values in anonymous shared memory, so a forked child's
-// writes are seen by the parent.
+// A fixed-size array in anonymous shared memory, so a forked child's writes are seen by the
+// parent. T must be plain data in practice: its bytes are its value and nothing needs destroying
+// (Eigen's fixed-size vectors qualify, though they declare their own copy operations).
 template <class T>
 class SharedArray {
-  static_assert(std::is_trivially_copyable_v<T>);
+  static_assert(std::is_trivially_destructible_v<T>);
 
  public:
   explicit SharedArray(std::size_t n) : size_(n) {

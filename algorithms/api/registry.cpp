@@ -21,7 +21,7 @@ void Registry::add(Algorithm algorithm) {
   if (algorithm.name.empty()) throw std::logic_error("an algorithm was registered without a name");
   if (find(algorithm.name))
     throw std::logic_error("algorithm '" + algorithm.name + "' is registered twice");
-  if (!algorithm.overlap && !algorithm.relation && !algorithm.segment)
+  if (!algorithm.overlap && !algorithm.relation && !algorithm.segment && !algorithm.process)
     throw std::logic_error("algorithm '" + algorithm.name + "' answers no level");
   algorithm.folder = current_folder_;
   algorithms_.push_back(std::move(algorithm));

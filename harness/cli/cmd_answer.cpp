@@ -17,28 +17,36 @@ std::string relation_text(const Algorithm& a, const Answers& ans) {
 }  // namespace
 
 int run_answer(int argc, char** argv) {
-  Args args(argc, argv, {"--algo"}, {});
+  Args args(argc, argv, with({"--algo"}, kRunValuedOptions), kRunFlags);
   if (args.help()) {
-    std::cout << "usage: tritri answer --algo NAME FILE...\n\n"
+    std::cout << "usage: tritri answer --algo NAME [--plugin LIB | --exec COMMAND] FILE...\n\n"
                  "One algorithm's answers for every case, as TSV with a header line:\n"
                  "  name overlap relation segment\n"
                  "overlap: 0/1 or 'unsupported'; relation: the relation vocabulary (see 'tritri label\n"
                  "--help'), or dim:<dimension> for an algorithm that gives only the dimension; segment:\n"
                  "x,y,z for a point, x,y,z;x,y,z for a segment, or empty/area/coplanar/unsupported.\n"
                  "'-' marks a level the algorithm does not answer. A degenerate case that the\n"
-                 "algorithm does not accept is answered 'unsupported' without calling it.\n";
+                 "algorithm does not accept is answered 'unsupported' without calling it. A case on\n"
+                 "which the algorithm crashed or hung is answered 'crash' or 'timeout' in every column.\n\n"
+              << kRunOptionsHelp;
     return kOk;
   }
+  load_external_algorithms(args);
   const auto names = args.values("--algo");
   if (names.size() != 1) throw UsageError("answer needs exactly one --algo NAME");
   const auto chosen = select_algorithms(names);
   if (chosen.size() != 1) throw UsageError("answer needs exactly one algorithm");
   const Algorithm& algorithm = *chosen.front();
   const auto cases = load_cases(args.positional());
-  const auto answers = answer_cases(algorithm, cases);
+  const auto answers = answer_cases(algorithm, cases, isolation_options(args));
   std::cout << "name\toverlap\trelation\tsegment\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Answers& a = answers[i];
+    if (a.fate != Fate::ok) {
+      const std::string word = to_string(a.fate);
+      std::cout << cases[i].name << '\t' << word << '\t' << word << '\t' << word << '\n';
+      continue;
+    }
     std::cout << cases[i].name << '\t'
               << (!algorithm.overlap ? "-" : a.declined ? "unsupported" : to_string(a.overlap)) << '\t'
               << relation_text(algorithm, a) << '\t'

@@ -25,18 +25,21 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
 }  // namespace
 
 int run_check(int argc, char** argv) {
-  Args args(argc, argv, {"--algo", "--json", "--baseline", "--write-baseline", "--max-failures"},
-            {"--quiet", "--confusion"});
+  Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures"}, kRunValuedOptions),
+            with({"--quiet", "--confusion"}, kRunFlags));
   if (args.help()) {
     std::cout
         << "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
            "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
+           "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
            "                    FILE...\n\n"
            "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
            "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
            "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
-           "relation (misclassified relation, '-' when not answered) and unsupported (declined, or\n"
-           "degenerate input the algorithm does not accept). Then the first N disagreements\n"
+           "relation (misclassified relation, '-' when not answered), unsupported (declined, or\n"
+           "degenerate input the algorithm does not accept), crash and timeout (the algorithm died\n"
+           "or hung on the case: each algorithm runs in a child process, and the case responsible is\n"
+           "found by bisection; the others are still checked). Then the first N disagreements\n"
            "(default 20), each paste-ready as a case line in %.17g and in hex float.\n\n"
            "For algorithms that answer the relation level, a confusion table follows: per algorithm\n"
            "x family, 'answered->oracle count' for every wrong cell (relation names, or dim:<d> for\n"
@@ -52,11 +55,15 @@ int run_check(int argc, char** argv) {
            "  --write-baseline F   record this run's disagreements as a baseline\n"
            "  --max-failures N     how many disagreements to print (default 20)\n"
            "  --confusion          print every confusion cell, the right ones too\n"
-           "  --quiet              print only the tables (and the baseline comparison)\n\n"
+           "  --quiet              print only the tables (and the baseline comparison)\n"
+        << kRunOptionsHelp
+        << "\n"
            "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
            "bad arguments or input.\n";
     return kOk;
   }
+  load_external_algorithms(args);
+  // Named algorithms, else every built-in one plus every plug-in given.
   const auto algorithms = select_algorithms(args.values("--algo"));
   const std::size_t max_failures = args.count("--max-failures", 20);
   // Read the baselines before the (possibly long) run, so a wrong path fails at once.
@@ -67,7 +74,7 @@ int run_check(int argc, char** argv) {
 
   const auto cases = load_cases(args.positional());
   const auto oracle = label_cases(cases);
-  const CheckResult result = run_check(algorithms, cases, oracle);
+  const CheckResult result = run_check(algorithms, cases, oracle, isolation_options(args));
 
   print_check_table(std::cout, result);
   print_confusion(std::cout, result, args.flag("--confusion"));

@@ -8,16 +8,18 @@
 namespace tritri::cli {
 
 int run_list(int argc, char** argv) {
-  Args args(argc, argv, {}, {"--tsv"});
+  Args args(argc, argv, kRunValuedOptions, with({"--tsv"}, kRunFlags));
   if (args.help()) {
     std::cout << "usage: tritri list [--tsv]\n\n"
                  "Every built-in algorithm: the answer levels it serves (overlap, relation, segment),\n"
                  "whether touching counts (closed) or not (open), its tolerance (value and the\n"
                  "quantity it is compared with, or none), whether it accepts zero-area triangles,\n"
-                 "and its citation. --tsv prints one tab-separated row per algorithm.\n";
+                 "and its citation. --tsv prints one tab-separated row per algorithm. --plugin LIB and\n"
+                 "--exec COMMAND add external algorithms, as for check.\n";
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("list takes no files");
+  load_external_algorithms(args);
   auto tolerance_text = [](const Algorithm& a) {
     if (a.tolerance.none()) return std::string("none");
     return format_double(a.tolerance.value) + (a.tolerance.relative ? " relative" : " absolute") +

@@ -9,17 +9,19 @@
 namespace tritri::cli {
 
 int run_show(int argc, char** argv) {
-  Args args(argc, argv, {"--algo"}, {});
+  Args args(argc, argv, with({"--algo"}, kRunValuedOptions), kRunFlags);
   if (args.help()) {
-    std::cout << "usage: tritri show NAME FILE... [--algo NAME]...\n\n"
+    std::cout << "usage: tritri show NAME FILE... [--algo NAME]... [--plugin LIB] [--exec COMMAND]\n\n"
                  "One case in full: its coordinates (shortest exact decimal and hex float), its labels,\n"
                  "the oracle's record (with the exact intersection rounded to double) and the answers\n"
-                 "of every algorithm (or those named with --algo).\n";
+                 "of every algorithm (or those named with --algo).\n\n"
+              << kRunOptionsHelp;
     return kOk;
   }
   if (args.positional().size() < 2) throw UsageError("show needs a case name and at least one file");
   const std::string wanted = args.positional().front();
   const std::vector<std::string> files(args.positional().begin() + 1, args.positional().end());
+  load_external_algorithms(args);
   const auto algorithms = select_algorithms(args.values("--algo"));
   std::vector<Case> found;
   for (auto& c : load_cases(files))
@@ -49,10 +51,14 @@ int run_show(int argc, char** argv) {
   std::size_t width = 4;
   for (const Algorithm* a : algorithms) width = std::max(width, a->name.size());
   for (const Algorithm* a : algorithms) {
-    const Answers ans = answer_cases(*a, found).front();
+    const Answers ans = answer_cases(*a, found, isolation_options(args)).front();
     std::cout << "  " << std::left << std::setw(static_cast<int>(width)) << a->name;
     if (ans.declined) {
       std::cout << "  unsupported (degenerate input)\n";
+      continue;
+    }
+    if (ans.fate != Fate::ok) {
+      std::cout << "  " << to_string(ans.fate) << " (" << ans.fault << ")\n";
       continue;
     }
     if (a->overlap) {

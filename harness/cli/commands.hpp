@@ -31,7 +31,11 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
 
 }  // namespace tritri::cli
 
+#include "args.hpp"
 #include "casefile.hpp"
+#include "isolation.hpp"
+
+#include <set>
 
 namespace tritri::cli {
 
@@ -39,6 +43,19 @@ namespace tritri::cli {
 std::vector<Case> load_cases(const std::vector<std::string>& files);
 
 std::string segment_text(const SegmentAnswer& s);  // "-", "empty", "x,y,z", "x,y,z;x,y,z", ...
+
+// The options of every command that runs algorithms: external algorithms (--plugin LIB,
+// --exec COMMAND with --exec-name NAME) and how they are run (--timeout S, --no-isolation).
+extern const std::set<std::string> kRunValuedOptions;
+extern const std::set<std::string> kRunFlags;
+extern const char* const kRunOptionsHelp;
+// Loads the --plugin libraries and starts the --exec commands, adding them to the registry.
+void load_external_algorithms(const Args& args);
+IsolationOptions isolation_options(const Args& args);
+inline std::set<std::string> with(std::set<std::string> a, const std::set<std::string>& b) {
+  a.insert(b.begin(), b.end());
+  return a;
+}
 std::string vec_text(const Vec3<double>& v);
 
 }  // namespace tritri::cli

@@ -1,6 +1,10 @@
 #include "args.hpp"
 #include "commands.hpp"
 
+#include "plugin.hpp"
+#include "process_plugin.hpp"
+
+#include <cstdlib>
 #include <map>
 
 namespace tritri::cli {
@@ -25,6 +29,42 @@ std::vector<Case> load_cases(const std::vector<std::string>& files) {
     throw UsageError("no cases in " + names + " (every line is blank or a comment)");
   }
   return all;
+}
+
+const std::set<std::string> kRunValuedOptions = {"--plugin", "--exec", "--exec-name", "--timeout"};
+const std::set<std::string> kRunFlags = {"--no-isolation"};
+const char* const kRunOptionsHelp =
+    "  --plugin LIB         also run the algorithm in shared library LIB (C ABI: tritri/plugin.h)\n"
+    "  --exec COMMAND       also run an algorithm in another process over the line protocol\n"
+    "                       (harness/process_plugin.hpp); correctness only\n"
+    "  --exec-name NAME     the name of the --exec algorithm (default: exec, exec2, ...)\n"
+    "  --timeout S          a case that makes no progress for S seconds is a timeout (default 2;\n"
+    "                       5 per case for --exec)\n"
+    "  --no-isolation       run algorithms in this process (for a debugger; a crash ends the run)\n";
+
+void load_external_algorithms(const Args& args) {
+  for (const auto& lib : args.values("--plugin")) load_plugin(lib);
+  const auto commands = args.values("--exec");
+  const auto names = args.values("--exec-name");
+  if (names.size() > commands.size()) throw UsageError("more --exec-name than --exec options");
+  const double timeout = args.value("--timeout") ? std::atof(args.value("--timeout")->c_str()) : 5.0;
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    const std::string name = i < names.size() ? names[i] : i == 0 ? "exec" : "exec" + std::to_string(i + 1);
+    add_process_algorithm(commands[i], name, timeout);
+  }
+}
+
+IsolationOptions isolation_options(const Args& args) {
+  IsolationOptions options;
+  options.enabled = !args.flag("--no-isolation");
+  if (auto t = args.value("--timeout")) {
+    char* end = nullptr;
+    const double seconds = std::strtod(t->c_str(), &end);
+    if (end == t->c_str() || *end != '\0' || !(seconds > 0))
+      throw UsageError("--timeout takes a number of seconds > 0, not '" + *t + "'");
+    options.stall_seconds = seconds;
+  }
+  return options;
 }
 
 std::string vec_text(const Vec3<double>& v) {

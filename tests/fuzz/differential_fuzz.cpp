@@ -72,11 +72,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   c.name = "fuzz";
   c.pair = recipe(r);
   const std::vector<tritri::Case> cases{c};
-  const auto labels = tritri::label_cases(cases);  // throws (and so aborts) if CGAL contradicts itself
+  const auto labels = tritri::label_cases(cases);
+  // The fuzzer must see a crash itself, not have it contained in a child process.
+  tritri::IsolationOptions in_process;
+  in_process.enabled = false;  // throws (and so aborts) if CGAL contradicts itself
   ++tally.pairs;
   for (const auto& algorithm : tritri::registry().all()) {
     tritri::CheckResult result;
-    tritri::score(algorithm, cases, labels, tritri::answer_cases(algorithm, cases), result);
+    tritri::score(algorithm, cases, labels, tritri::answer_cases(algorithm, cases, in_process), result);
     for (const auto& f : result.failures) {
       ++tally.disagreements;
       if (!tally.log) tally.log = std::fopen("fuzz-disagreements.log", "a");

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -79,14 +80,25 @@ struct Algorithm {
 
   std::string folder;  // filled in by the registry: the algorithm's folder under algorithms/
 
+  // An algorithm in another process, spoken to over a line protocol (harness/process_plugin.hpp)
+  // instead of through batch entry points: checked for correctness, never timed.
+  struct Process {
+    std::string command;
+    bool relation = false;  // it answers the relation level as well as overlap
+    double timeout_seconds = 5.0;
+  };
+  std::optional<Process> process;
+
   bool answers(Level level) const {
     switch (level) {
-      case Level::overlap: return overlap != nullptr;
-      case Level::relation: return relation != nullptr;
+      case Level::overlap: return overlap != nullptr || process.has_value();
+      case Level::relation: return relation != nullptr || (process && process->relation);
       case Level::segment: return segment != nullptr;
     }
     return false;
   }
+  // It can be timed: its answers come from batch entry points in this process.
+  bool timeable() const { return !process.has_value(); }
   std::string levels() const;  // "overlap,relation"
 };
 
