@@ -114,9 +114,13 @@ bool in_relative_interior(const ExactTriangle& t, const Point& p) {
 // sqrt of an exact positive number, to double, without the underflow (tiny separations) or
 // overflow (huge coordinates) of rounding the square first: scale by powers of 4, which the
 // square root turns into exact powers of 2.
-double sqrt_to_double(K::FT square) {
+// The conversion starts from the exact value, not from the lazy number's interval
+// approximation, so that the same distance computed in another vertex order gives the same double.
+double sqrt_to_double(const K::FT& lazy_square) {
+  auto square = CGAL::exact(lazy_square);
+  using Exact = decltype(square);
   int shift = 0;  // sqrt(square) = sqrt(scaled) * 2^-shift
-  const K::FT up = std::ldexp(1.0, 100), down = std::ldexp(1.0, -100);
+  const Exact up = std::ldexp(1.0, 100), down = std::ldexp(1.0, -100);
   while (CGAL::to_double(square) < 1e-200) {
     square = square * up;
     shift += 50;

@@ -74,6 +74,17 @@ TEST(Oracle, SeparationOfHugeCoordinatesDoesNotOverflow) {
   EXPECT_DOUBLE_EQ(r.separation, big);
 }
 
+TEST(Oracle, SeparationDoesNotDependOnVertexOrder) {
+  const Triangle a = tri({0.1, 0.2, 0.3}, {1.7, 0.1, 0.2}, {0.3, 1.9, 0.7});
+  const Triangle b = tri({2.1, 2.2, 3.3}, {3.7, 2.1, 2.9}, {2.3, 3.9, 2.7});
+  const double reference = oracle_label({a, b}).separation;
+  for (const auto& o1 : kOrders)
+    for (const auto& o2 : kOrders) {
+      EXPECT_EQ(oracle_label({permuted(a, o1), permuted(b, o2)}).separation, reference);
+      EXPECT_EQ(oracle_label({permuted(b, o2), permuted(a, o1)}).separation, reference);
+    }
+}
+
 TEST(Oracle, StageFollowsThePlaneTests) {
   // T1 strictly above T2's plane
   EXPECT_EQ(oracle_label({tri({0, 0, 1}, {4, 0, 1}, {0, 4, 2}), kFloor}).stage, Stage::plane2);
