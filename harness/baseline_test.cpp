@@ -1,8 +1,15 @@
-// Every registered algorithm, on the checked-in case files, disagrees with the oracle exactly as
-// its folder's expected-failures.tsv records: a new disagreement fails (a regression), and so
-// does a recorded one that no longer occurs (the baseline is stale: re-record it and say why).
+// Every registered algorithm, on the checked-in case files and on the quick corpus, disagrees
+// with the oracle exactly as its folder's expected-failures.tsv records: a new disagreement
+// fails (a regression), and so does a recorded one that no longer occurs (the baseline is stale:
+// re-record it and say why). To re-record, write the quick corpus to a directory and check on
+// the same inputs:
+//   tritri corpus --quick --out /tmp/quick
+//   tritri check --algo NAME --write-baseline algorithms/FOLDER/expected-failures.tsv
+//       cases/builtin.cases cases/yuhe13.cases cases/sabharwal15.cases /tmp/quick/*.cases
+// (one command; every algorithm of the folder in --algo, since they share the file).
 #include "check.hpp"
 #include "check_output.hpp"
+#include "corpus.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +19,8 @@ namespace tritri {
 namespace {
 
 std::vector<std::string> checked_in_case_files() {
-  return {std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"};
+  const std::string cases = std::string(TRITRI_SOURCE_DIR) + "/cases/";
+  return {cases + "builtin.cases", cases + "yuhe13.cases", cases + "sabharwal15.cases"};
 }
 
 const std::vector<Case>& all_cases() {
@@ -20,6 +28,9 @@ const std::vector<Case>& all_cases() {
     std::vector<Case> all;
     for (const auto& file : checked_in_case_files())
       for (auto& c : read_case_file(file)) all.push_back(std::move(c));
+    // The singular configurations, generated rather than checked in: `tritri corpus --quick`
+    // with its default seed gives the same cases.
+    for (auto& c : corpus::generate_corpus(corpus::quick_options())) all.push_back(std::move(c));
     return all;
   }();
   return cases;

@@ -111,11 +111,11 @@ TEST(CompareChecks, ReportsTheFamiliesWhoseErrorsChanged) {
 }
 
 TEST(CompareChecks, RefusesFilesItCannotCompare) {
-  const auto a = check_file("check-a.json", 0);
-  const auto bench = bench_file("base.json", 1.0, 1);
+  const auto a = check_file("refuse-check.json", 0);
+  const auto bench = bench_file("refuse-bench.json", 1.0, 1);
   std::ostringstream out;
   EXPECT_THROW(print_comparison(out, a, bench, {}), std::runtime_error);
-  const std::string junk = std::string(TRITRI_BINARY_DIR) + "/junk.json";
+  const std::string junk = std::string(TRITRI_BINARY_DIR) + "/refuse-junk.json";
   std::ofstream(junk) << "{not json";
   EXPECT_THROW(print_comparison(out, junk, a, {}), std::runtime_error);
 }

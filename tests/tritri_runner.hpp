@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace tritri::testing_support {
 
@@ -26,10 +27,13 @@ inline Outcome run_tritri(const std::string& arguments) {
   return run;
 }
 
-// Writes `text` to a file under the build tree and returns its path.
+// Writes `text` to a file under the build tree and returns its path. Written beside and renamed
+// into place, because ctest runs tests in parallel and several may write the same fixture.
 inline std::string scratch_file(const std::string& name, const std::string& text) {
   const std::string path = std::string(TRITRI_BINARY_DIR) + "/scratch-" + name;
-  std::ofstream(path, std::ios::binary) << text;
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  std::ofstream(temporary, std::ios::binary) << text;
+  std::rename(temporary.c_str(), path.c_str());
   return path;
 }
 

@@ -37,7 +37,7 @@ TEST(Cli, EveryCommandHasHelp) {
 TEST(Cli, ListShowsLevelsSemanticsToleranceAndCitation) {
   const Outcome r = tritri("list --tsv");
   ASSERT_EQ(r.status, 0);
-  EXPECT_EQ(first_line(r.out), "name\tlevels\tboundary\ttolerance\tdegenerate\tsummary\tcitation");
+  EXPECT_EQ(first_line(r.out), "name\tlevels\tboundary\ttolerance\tdegenerate\tsummary\tcitation\tfolder");
   EXPECT_NE(r.out.find("moller97\toverlap\tclosed\t1e-06 absolute"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Möller"), std::string::npos);
 }

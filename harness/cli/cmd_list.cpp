@@ -27,11 +27,11 @@ int run_list(int argc, char** argv) {
   };
   const auto& all = registry().all();
   if (args.flag("--tsv")) {
-    std::cout << "name\tlevels\tboundary\ttolerance\tdegenerate\tsummary\tcitation\n";
+    std::cout << "name\tlevels\tboundary\ttolerance\tdegenerate\tsummary\tcitation\tfolder\n";
     for (const auto& a : all)
       std::cout << a.name << '\t' << a.levels() << '\t' << (a.boundary == Boundary::closed ? "closed" : "open")
                 << '\t' << tolerance_text(a) << '\t' << (a.accepts_degenerate ? "accepted" : "rejected")
-                << '\t' << a.summary << '\t' << a.citation << '\n';
+                << '\t' << a.summary << '\t' << a.citation << '\t' << a.folder << '\n';
     return kOk;
   }
   std::size_t width = 4;

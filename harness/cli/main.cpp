@@ -16,6 +16,7 @@ constexpr Command kCommands[] = {
     {"answer", "one algorithm's answers for every case in case files (TSV)", run_answer},
     {"check", "algorithms against the oracle: errors per algorithm and family", run_check},
     {"show", "one case: coordinates, the oracle's record and every algorithm's answer", run_show},
+    {"corpus", "generate and label the singular-configuration corpus (case files per family)", run_corpus},
     {"compare", "what changed between two check or bench results (with a U test for times)", run_compare},
 };
 

@@ -114,8 +114,8 @@ bool in_relative_interior(const ExactTriangle& t, const Point& p) {
 // sqrt of an exact positive number, to double, without the underflow (tiny separations) or
 // overflow (huge coordinates) of rounding the square first: scale by powers of 4, which the
 // square root turns into exact powers of 2.
-// The conversion starts from the exact value, not from the lazy number's interval
-// approximation, so that the same distance computed in another vertex order gives the same double.
+// The conversion works on the exact value, not on the lazy number's interval approximation, so
+// the same distance computed in another vertex order gives the same double: the nearest one.
 double sqrt_to_double(const K::FT& lazy_square) {
   auto square = CGAL::exact(lazy_square);
   using Exact = decltype(square);
@@ -129,7 +129,17 @@ double sqrt_to_double(const K::FT& lazy_square) {
     square = square * down;
     shift -= 50;
   }
-  return std::ldexp(std::sqrt(CGAL::to_double(square)), -shift);
+  // The double nearest the exact square root: start from the floating-point estimate and step
+  // to a neighbour while the exact midpoint between them is still below (or above) the root.
+  double root = std::sqrt(CGAL::to_double(square));
+  auto midpoint_at_or_below_root = [&](double below, double above) {
+    const Exact mid = (Exact(below) + Exact(above)) / 2;
+    return mid * mid <= square;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  while (midpoint_at_or_below_root(root, std::nextafter(root, inf))) root = std::nextafter(root, inf);
+  while (!midpoint_at_or_below_root(std::nextafter(root, 0.0), root)) root = std::nextafter(root, 0.0);
+  return std::ldexp(root, -shift);
 }
 
 void store_points(OracleRecord& r, std::initializer_list<Point> points) {

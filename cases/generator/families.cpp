@@ -1,0 +1,107 @@
+#include "construction.hpp"
+#include "families_parts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tritri::corpus {
+
+const std::vector<Family>& families() {
+  static const std::vector<Family> all = [] {
+    std::vector<Family> out;
+    add_contact_families(out);
+    add_plane_families(out);
+    add_stress_families(out);
+    return out;
+  }();
+  return all;
+}
+
+const Family* find_family(std::string_view name) {
+  for (const auto& f : families())
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+std::vector<Relation> relations_meant(const Family& family) {
+  std::vector<Relation> out = family.also_produces;
+  for (const auto& c : family.configs)
+    if (c.expect) out.push_back(*c.expect);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+namespace {
+
+void permute_axes(Rng& rng, Frame& f) {
+  int order[3] = {0, 1, 2};
+  for (int i = 2; i > 0; --i) std::swap(order[i], order[rng.between(0, i)]);
+  Frame p = f;
+  for (int i = 0; i < 3; ++i) {
+    const double s = rng.sign();
+    for (int j = 0; j < 3; ++j) p.m[i][j] = s * f.m[order[i]][j];
+    p.t[i] = s * f.t[order[i]];
+  }
+  f = p;
+}
+
+double det3(const double (&m)[3][3]) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+// a + b, or nothing if it rounds (Knuth's TwoSum: the error term is exactly the rounding).
+bool add_exact(double a, double b, double& sum) {
+  sum = a + b;
+  const double bb = sum - a;
+  return (a - (sum - bb)) + (b - bb) == 0.0;
+}
+
+bool mul_exact(double a, double b, double& product) {
+  product = a * b;
+  return std::fma(a, b, -product) == 0.0;
+}
+
+}  // namespace
+
+Frame random_frame(Rng& rng, FrameKind kind) {
+  Frame f{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {0, 0, 0}};
+  if (kind == FrameKind::none) return f;
+  if (kind == FrameKind::general) {
+    do
+      for (auto& row : f.m)
+        for (double& x : row) x = rng.between(-2, 2);
+    while (det3(f.m) == 0);
+  } else if (kind == FrameKind::planar) {
+    do {
+      f.m[0][0] = rng.between(-2, 2), f.m[0][1] = rng.between(-2, 2);
+      f.m[1][0] = rng.between(-2, 2), f.m[1][1] = rng.between(-2, 2);
+    } while (f.m[0][0] * f.m[1][1] - f.m[0][1] * f.m[1][0] == 0);
+  }
+  // Translations are often zero along an axis, so that ulp-sized features survive the frame.
+  for (int i = 0; i < 3; ++i)
+    if (kind != FrameKind::planar || i < 2) f.t[i] = rng.between(0, 1) ? rng.between(-32, 32) : 0;
+  permute_axes(rng, f);
+  return f;
+}
+
+std::optional<TrianglePair> apply_exactly(const Frame& f, const TrianglePair& pair) {
+  TrianglePair out = pair;
+  for (Triangle* t : {&out.t1, &out.t2})
+    for (auto& v : t->v) {
+      V3 w;
+      for (int i = 0; i < 3; ++i) {
+        double acc = f.t[i];
+        for (int j = 0; j < 3; ++j) {
+          double p;
+          if (!mul_exact(f.m[i][j], v[j], p) || !add_exact(acc, p, acc)) return std::nullopt;
+        }
+        w[i] = acc;
+      }
+      v = w;
+    }
+  return out;
+}
+
+}  // namespace tritri::corpus
