@@ -54,6 +54,9 @@ Case parse_case_line(std::string_view text, const std::string& file, int line);
 std::vector<Case> read_cases(std::istream& in, const std::string& file_name);
 std::vector<Case> read_case_file(const std::string& path);  // also rejects duplicate names
 
+// cases/builtin.cases, compiled into the library.
+std::vector<Case> builtin_cases();
+
 // Shortest decimal that strtod reads back to exactly `x` ("-0" for negative zero).
 std::string format_double(double x);
 // C99 hex float, e.g. 0x1.8p+1.

@@ -77,7 +77,9 @@ typedef struct {
   void (*segment)(const double* pairs, size_t n, tritri_segment* out);
 } tritri_plugin;
 
-/* The one symbol a plug-in exports. */
+/* The one symbol a plug-in exports. Declared here so that the compiler checks a plug-in's
+ * definition against it. */
+const tritri_plugin* tritri_plugin_entry(void);
 typedef const tritri_plugin* (*tritri_plugin_entry_fn)(void);
 #define TRITRI_PLUGIN_ENTRY "tritri_plugin_entry"
 
