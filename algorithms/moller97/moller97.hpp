@@ -15,8 +15,10 @@
 //   N·V + d with |d| < EPSILON to 0 (Snap = true). It is absolute: it does not scale with the
 //   triangles, so large triangles are snapped onto each other's planes from far away and tiny
 //   ones always look coplanar. Snap = false is the same test with every comparison exact-zero.
-// - Coplanar (all three distances of T1 zero after the snap): project onto the axis plane that
-//   drops the largest component of N1; the 9 edge pairs with the segment test of Antonio
+// - Coplanar (all three distances of either triangle zero after the snap; the published code
+//   tests this in the interval computation of each triangle, and the snap can zero one
+//   triangle's distances and not the other's): project onto the axis plane that drops the
+//   largest component of N1; the 9 edge pairs with the segment test of Antonio
 //   (Graphics Gems III), then a strict point-in-triangle test of one vertex each way. The edge
 //   test never reports a collinear pair (its denominator is zero), but that loses no contact:
 //   where collinear edges overlap, an edge adjacent to one of them starts at the end of the
@@ -184,6 +186,9 @@ struct Setup {
   Distances<T> of1, of2;  // T1's distances to plane 2; T2's distances to plane 1
   T proj1[3], proj2[3];   // vertices projected on the largest axis of the line direction
   int lone1, lone2;
+
+  // Either triangle lies in the other's plane after the snap.
+  bool coplanar() const { return lone1 < 0 || lone2 < 0; }
 };
 
 template <class T, bool Snap>
@@ -209,7 +214,7 @@ template <class T, bool Snap>
 bool overlap(const PairT<T>& pair) {
   Setup<T, Snap> s;
   if (!setup(pair, s)) return false;
-  if (s.lone1 < 0) return coplanar_overlap(s.plane1.normal, pair.t1, pair.t2);
+  if (s.coplanar()) return coplanar_overlap(s.plane1.normal, pair.t1, pair.t2);
   const Interval<T> i1 = interval_with_division(s.proj1, s.of1, s.lone1);  // step 6
   const Interval<T> i2 = interval_with_division(s.proj2, s.of2, s.lone2);
   return !(i1.hi < i2.lo || i2.hi < i1.lo);  // step 7
@@ -235,7 +240,7 @@ template <class T, bool Snap>
 bool overlap_division_free(const PairT<T>& pair) {
   Setup<T, Snap> s;
   if (!setup(pair, s)) return false;
-  if (s.lone1 < 0) return coplanar_overlap(s.plane1.normal, pair.t1, pair.t2);
+  if (s.coplanar()) return coplanar_overlap(s.plane1.normal, pair.t1, pair.t2);
   const Fraction<T> f = interval_fraction(s.proj1, s.of1, s.lone1);
   const Fraction<T> g = interval_fraction(s.proj2, s.of2, s.lone2);
   const T xx = f.x0 * f.x1, yy = g.x0 * g.x1, xxyy = xx * yy;
@@ -272,8 +277,10 @@ SegmentAnswer segment(const PairT<T>& pair) {
   out.kind = SegmentKind::empty;
   Setup<T, Snap> s;
   if (!setup(pair, s)) return out;
-  if (s.lone1 < 0) {
-    // Coplanar: the published function reports the flag and the boolean, never a segment.
+  if (s.coplanar()) {
+    // Coplanar: the published function reports the flag and the boolean, never a segment. (For
+    // the second triangle it ignores the coplanar result of its interval computation and goes on
+    // with values it never set; this port takes the coplanar branch there too.)
     out.kind = coplanar_overlap(s.plane1.normal, pair.t1, pair.t2) ? SegmentKind::coplanar
                                                                     : SegmentKind::empty;
     return out;

@@ -96,6 +96,27 @@ TEST(Moller97, SegmentVariantReturnsTheIntersection) {
   EXPECT_EQ((segment<double, true>({kFloor, tri({1, 1, 0}, {5, 1, 0}, {1, 5, 0})}).kind), SegmentKind::coplanar);
 }
 
+// The snap can put T2 in T1's plane without putting T1 in T2's: |N1| and |N2| differ, and so do
+// the two sets of unnormalised distances. The published code then takes its coplanar branch
+// from the second interval computation; an early port read past its arrays instead (found by
+// UndefinedBehaviorSanitizer on the perturbed corpus).
+TEST(Moller97, SnapOnOneSideOnlyTakesTheCoplanarBranch) {
+  // N1 = (0, 0, 1e4): T2's heights of at most 5e-11 give |d| <= 5e-7 < EPSILON, all snapped.
+  // N2 = (0, -5e-8, 1e6): T1's vertex (0, 100, 0) is at d = -5e-6, beyond EPSILON: not snapped.
+  const Triangle t1 = tri({0, 0, 0}, {100, 0, 0}, {0, 100, 0});
+  const Triangle t2 = tri({0, 0, 0}, {1000, 0, 0}, {0, 1000, 5e-11});
+  const TrianglePair pair{t1, t2};
+  tritri::moller97::Setup<double, true> s;
+  ASSERT_TRUE((setup<double, true>(pair, s)));
+  EXPECT_GE(s.lone1, 0);
+  EXPECT_LT(s.lone2, 0);
+  EXPECT_TRUE(s.coplanar());
+  // coplanar branch: the projections overlap, so the snapped test says they meet
+  EXPECT_TRUE((overlap<double, true>(pair)));
+  EXPECT_TRUE((overlap_division_free<double, true>(pair)));
+  EXPECT_EQ((segment<double, true>(pair).kind), SegmentKind::coplanar);
+}
+
 // The published snap is absolute: a small triangle hovering 1e-8 above the floor is snapped
 // into it and reported as touching, while the exact-zero variant keeps it apart.
 TEST(Moller97, AbsoluteSnapMakesNearbySmallTrianglesTouch) {
