@@ -17,6 +17,7 @@ constexpr Command kCommands[] = {
     {"check", "algorithms against the oracle: errors per algorithm and family", run_check},
     {"show", "one case: coordinates, the oracle's record and every algorithm's answer", run_show},
     {"corpus", "generate and label the singular-configuration corpus (case files per family)", run_corpus},
+    {"bench", "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)", run_bench},
     {"compare", "what changed between two check or bench results (with a U test for times)", run_compare},
 };
 

@@ -1,0 +1,76 @@
+// `tritri bench`: every registered algorithm timed on every workload and level it serves, on
+// Google Benchmark, with the answers checked against the oracle first and the operations counted.
+//
+// Names: `algo/level/workload:value`, e.g. `moller97/overlap/ratio:0.50`, and for an algorithm's
+// stages `yuhe13/stage:transform/ratio:0.50`. One iteration is one pass over the pool in order,
+// in batches of kBatch pairs through the algorithm's batch entry point (one indirect call per
+// batch, none per pair, no allocation in the timed loop); every answer is folded into a checksum
+// that goes through benchmark::DoNotOptimize once per batch. Time per pair comes from items
+// processed (one item = one pair) and from the `per_pair` counter.
+#pragma once
+
+#include "bench/pools.hpp"
+#include "casefile.hpp"
+#include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tritri::bench {
+
+inline constexpr std::size_t kBatch = 256;
+
+struct Options {
+  std::vector<const Algorithm*> algorithms;  // empty: every registered algorithm
+  std::vector<Level> levels;                 // empty: every level
+  // "ratio", "ratio:0.30", "type", "type:point", "family", "family:NAME", "stage"; empty: ratio,
+  // type, family and stage (when an algorithm has stages).
+  std::vector<std::string> workloads;
+  std::size_t pool_size = kDefaultPoolSize;
+  std::uint64_t seed = kDefaultSeed;
+  int repetitions = 9;
+  double min_time = 0.1;         // seconds per repetition
+  double min_warmup_time = 0.02; // seconds before each repetition
+  bool interleave = true;        // random interleaving of the repetitions
+  std::string filter;            // Google Benchmark regex on the names; empty: all
+  std::string json_path;         // empty: no file
+  // The cases of the family: workloads; empty: the corpus generator's (cases/generator), the
+  // CI corpus when `quick`.
+  std::vector<Case> family_cases;
+  std::string family_source;       // where they came from, for the context
+  bool quick = false;
+  bool count_operations = true;
+  bool list_only = false;          // print the benchmark names and exit
+};
+
+// Options for CI: small pools, few repetitions, short runs (seconds in all).
+Options quick_options();
+
+// Builds the pools, checks every algorithm on them, registers and runs the benchmarks, prints
+// the tables to `out` and writes the JSON. Returns 0, or 1 when a benchmark failed.
+int run(const Options& options, std::ostream& out);
+
+// ---- pieces, exposed for the tests ----
+
+// Wrong answers of one level on a pool (per the oracle), and the cases the algorithm declined.
+struct Score {
+  std::size_t wrong = 0;
+  std::size_t unsupported = 0;
+};
+Score score_overlap(const Pool& pool, const std::vector<Overlap>& answers);
+Score score_relation(const Pool& pool, const std::vector<RelationAnswer>& answers);
+// A segment answer is scored by what it implies about overlap (empty or not).
+Score score_segment(const Pool& pool, const std::vector<SegmentAnswer>& answers);
+
+// Operations per pair of the algorithm's counting instantiation at `level` on the pool; nullopt
+// when the folder registered none for that level.
+std::optional<OpCounts> count_operations(const Algorithm& algorithm, Level level, const Pool& pool);
+
+// The context keys written into the JSON: git SHA and dirty flag, compiler and flags, CGAL, FCL
+// and Eigen versions (and the rest of the run's provenance).
+std::vector<std::pair<std::string, std::string>> build_context();
+
+}  // namespace tritri::bench

@@ -1,0 +1,97 @@
+#include "args.hpp"
+#include "bench/bench.hpp"
+#include "commands.hpp"
+
+#include <iostream>
+
+namespace tritri::cli {
+
+int run_bench(int argc, char** argv) {
+  Args args(argc, argv,
+            {"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
+             "--json", "--cases"},
+            {"--quick", "--no-interleave", "--no-ops", "--list"});
+  if (args.help()) {
+    std::cout
+        << "usage: tritri bench [--quick] [--algo NAME]... [--level L]... [--workload W]...\n"
+           "                    [--filter REGEX] [--pool N] [--seed S] [--repetitions N]\n"
+           "                    [--min-time SEC] [--no-interleave] [--no-ops] [--json OUT]\n"
+           "                    [--cases FILE]... [--list]\n\n"
+           "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
+           "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
+           "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
+           "  ratio:R    R = 0, 0.1, ..., 1: exactly R of the pairs intersect; triangles of mixed\n"
+           "             sizes, so every exit stage of a plane-rejecting test occurs\n"
+           "  type:T     T = disjoint, point, segment, area: the dimension of the intersection\n"
+           "  family:F   one pool per corpus family (the generator's, or the cases of --cases):\n"
+           "             what singular and near-singular input costs\n"
+           "  stage      the stages an algorithm registers (Yu-He's transform / test in the frame),\n"
+           "             on the ratio:0.50 pool\n"
+           "Benchmarks are named algo/level/workload:value (e.g. moller97/overlap/ratio:0.50). Every\n"
+           "algorithm is checked on every pool first: 'wrong' counts its disagreements with the\n"
+           "oracle, shown beside the time. Prints ns per pair per algorithm x workload, relative\n"
+           "to moller97, the operation counts of the counting instantiations, the harness floor\n"
+           "(the null algorithm) and the repetitions' spread.\n\n"
+           "  --quick            CI: pools of 4096 pairs, the CI corpus, 3 repetitions, short runs\n"
+           "  --algo NAME        algorithms to time (repeat, or NAME,NAME); default all. moller97\n"
+           "                     and the floor are always included, as references\n"
+           "  --level L          overlap, relation or segment (repeatable); default all\n"
+           "  --workload W       ratio, ratio:R, type, type:T, family, family:F, stage (repeatable);\n"
+           "                     default ratio, type, family, stage\n"
+           "  --filter REGEX     run only the benchmarks whose name matches (Google Benchmark's)\n"
+           "  --pool N           pairs per pool (default 65536)\n"
+           "  --seed S           seed of the pools (default 20240601); recorded in the JSON\n"
+           "  --repetitions N    repetitions per benchmark, median reported (default 9)\n"
+           "  --min-time SEC     minimum time per repetition (default 0.1)\n"
+           "  --no-interleave    run the repetitions of a benchmark back to back\n"
+           "  --no-ops           skip the operation counts\n"
+           "  --json OUT         write Google Benchmark's JSON with tritri's context keys and a\n"
+           "                     'tritri' section (pools, medians, ratios, operation counts);\n"
+           "                     default tritri-bench.json; '-' for none\n"
+           "  --cases FILE       case files for the family workloads (repeatable), instead of the\n"
+           "                     corpus generator's families\n"
+           "  --list             list the benchmarks' names and exit\n\n"
+           "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments.\n";
+    return kOk;
+  }
+  if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
+
+  bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
+  std::vector<std::string> names;
+  for (const auto& v : args.values("--algo")) names.push_back(v);
+  if (!names.empty()) options.algorithms = select_algorithms(names);
+  for (const auto& v : args.values("--level")) {
+    const auto level = parse_level(v);
+    if (!level) throw UsageError("unknown level '" + v + "' (overlap, relation, segment)");
+    options.levels.push_back(*level);
+  }
+  options.workloads = args.values("--workload");
+  options.filter = args.value("--filter").value_or("");
+  options.pool_size = args.count("--pool", options.pool_size);
+  if (options.pool_size == 0) throw UsageError("--pool must be at least 1");
+  options.seed = args.count("--seed", options.seed);
+  options.repetitions = static_cast<int>(args.count("--repetitions", static_cast<std::size_t>(options.repetitions)));
+  if (options.repetitions < 1) throw UsageError("--repetitions must be at least 1");
+  if (auto t = args.value("--min-time")) {
+    char* end = nullptr;
+    options.min_time = std::strtod(t->c_str(), &end);
+    if (*end || !(options.min_time > 0)) throw UsageError("--min-time wants a positive number of seconds");
+  }
+  options.interleave = !args.flag("--no-interleave");
+  options.count_operations = !args.flag("--no-ops");
+  options.list_only = args.flag("--list");
+  const std::string json = args.value("--json").value_or("tritri-bench.json");
+  options.json_path = json == "-" ? "" : json;
+  const auto case_files = args.values("--cases");
+  if (!case_files.empty()) {
+    options.family_cases = load_cases(case_files);
+    for (const auto& f : case_files) options.family_source += (options.family_source.empty() ? "" : " ") + f;
+  }
+  try {
+    return bench::run(options, std::cout);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+}  // namespace tritri::cli
