@@ -197,6 +197,7 @@ std::vector<TimeComparison> compare_benchmarks(const std::string& a_path, const 
     if (c.repetitions_a >= options.min_repetitions && c.repetitions_b >= options.min_repetitions) {
       c.test = mann_whitney(it->second, times_b);
       c.significant = c.test.p_value < options.alpha;
+      c.counts = c.significant && std::abs(c.ratio - 1) >= options.min_change;
     }
     out.push_back(c);
   }
@@ -227,11 +228,13 @@ bool print_comparison(std::ostream& out, const std::string& a_path, const std::s
     std::string verdict = "-";
     if (r.repetitions_a < options.min_repetitions || r.repetitions_b < options.min_repetitions)
       verdict = "too few repetitions to test";
-    else if (r.significant)
+    else if (r.counts)
       verdict = r.ratio > 1 ? "slower (significant)" : "faster (significant)";
+    else if (r.significant)
+      verdict = "significant but within " + std::to_string(static_cast<int>(std::lround(100 * options.min_change))) + "%";
     else
       verdict = "no significant change";
-    if (r.significant && r.ratio > 1) worse = true;
+    if (r.counts && r.ratio > 1) worse = true;
     std::ostringstream p;
     if (r.repetitions_a >= options.min_repetitions && r.repetitions_b >= options.min_repetitions)
       p << std::setprecision(3) << r.test.p_value;

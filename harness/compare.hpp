@@ -28,11 +28,15 @@ struct TimeComparison {
   double median_a = 0, median_b = 0;  // seconds per item (or per iteration without item counts)
   double ratio = 1;                   // median_b / median_a
   UTest test;
-  bool significant = false;
+  bool significant = false;  // p < alpha
+  bool counts = false;       // significant and beyond min_change: a real slowdown or speed-up
 };
 
 struct CompareOptions {
   double alpha = 0.05;          // significance level
+  // A significant change smaller than this (as a fraction of A's median) does not count: runs
+  // minutes apart drift by a percent or so, and nine repetitions are enough to detect that.
+  double min_change = 0.02;
   std::size_t min_repetitions = 3;  // fewer on either side: no test, never significant
 };
 

@@ -75,7 +75,7 @@ TEST(CompareBenchmarks, AnInjectedSlowdownIsSignificantAndARerunIsNot) {
     EXPECT_EQ(c.repetitions_a, 9u);  // the aggregate row is not a repetition
   }
   for (const auto& c : compare_benchmarks(base, rerun, {})) {
-    EXPECT_FALSE(c.significant) << c.name << " p=" << c.test.p_value;
+    EXPECT_FALSE(c.counts) << c.name << " p=" << c.test.p_value;
     EXPECT_NEAR(c.ratio, 1.0, 0.03);
   }
   std::ostringstream out;
@@ -98,6 +98,18 @@ std::string check_file(const std::string& name, int false_negatives) {
   const std::string path = std::string(TRITRI_BINARY_DIR) + "/" + name;
   std::ofstream(path) << doc.dump();
   return path;
+}
+
+TEST(CompareBenchmarks, ASignificantButTinyDriftDoesNotCount) {
+  const auto base = bench_file("drift-base.json", 1.0, 4);
+  const auto drift = bench_file("drift.json", 1.008, 5);  // 0.8% slower, noise 1%: may test significant
+  std::ostringstream out;
+  EXPECT_FALSE(print_comparison(out, base, drift, {}));
+  for (const auto& c : compare_benchmarks(base, drift, {})) EXPECT_FALSE(c.counts) << c.name;
+  CompareOptions strict;
+  strict.min_change = 0;
+  const auto slow = bench_file("drift-slow.json", 1.2, 6);
+  for (const auto& c : compare_benchmarks(base, slow, strict)) EXPECT_TRUE(c.counts) << c.name;
 }
 
 TEST(CompareChecks, ReportsTheFamiliesWhoseErrorsChanged) {

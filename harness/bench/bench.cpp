@@ -102,6 +102,7 @@ struct Entry {
   std::vector<TrianglePair> prepared;  // a stage's input when it has a prepare step
   bool floor = false;
   Score score;
+  std::vector<Fault> faults;    // pairs it crashed or hung on when checked: then it is not timed
   std::optional<OpCounts> ops;  // totals over the pool
   std::vector<double> ns_per_pair;  // one per repetition (CPU time)
 
@@ -140,24 +141,26 @@ std::string shell_output(const std::string& command) {
 }
 
 // Scores one algorithm at one level on a pool, through its own batch entry point.
-Score score_entry(const Algorithm& a, Level level, const Pool& pool) {
+// Runs one level of the algorithm over the pool in a child process (isolation.hpp), so that a
+// crash or a hang costs that entry, not the run.
+template <class Answer, class Batch>
+std::vector<Answer> answers_isolated(Batch batch, const Pool& pool, const IsolationOptions& isolation,
+                                     std::vector<Fault>& faults) {
   const std::size_t n = pool.size();
+  SharedArray<Answer> shared(n);
+  faults = run_isolated(n, [&](std::size_t b, std::size_t e) { batch(pool.pairs.data() + b, e - b, shared.data() + b); },
+                        isolation);
+  return std::vector<Answer>(shared.data(), shared.data() + n);
+}
+
+Score score_entry(const Algorithm& a, Level level, const Pool& pool, const IsolationOptions& isolation,
+                  std::vector<Fault>& faults) {
   switch (level) {
-    case Level::overlap: {
-      std::vector<Overlap> out(n);
-      a.overlap(pool.pairs.data(), n, out.data());
-      return score_overlap(pool, out);
-    }
-    case Level::relation: {
-      std::vector<RelationAnswer> out(n);
-      a.relation(pool.pairs.data(), n, out.data());
-      return score_relation(pool, out);
-    }
-    case Level::segment: {
-      std::vector<SegmentAnswer> out(n);
-      a.segment(pool.pairs.data(), n, out.data());
-      return score_segment(pool, out);
-    }
+    case Level::overlap: return score_overlap(pool, answers_isolated<Overlap>(a.overlap, pool, isolation, faults));
+    case Level::relation:
+      return score_relation(pool, answers_isolated<RelationAnswer>(a.relation, pool, isolation, faults));
+    case Level::segment:
+      return score_segment(pool, answers_isolated<SegmentAnswer>(a.segment, pool, isolation, faults));
   }
   return {};
 }
@@ -465,6 +468,7 @@ int run(const Options& options, std::ostream& out) {
 
   // ---- the entries: checked and counted before anything is timed ----
   std::vector<std::unique_ptr<Entry>> entries;
+  std::vector<std::unique_ptr<Entry>> faulted;  // crashed or hung when checked: reported, not timed
   for (const Pool& pool : pools) {
     const bool extra = stage_pool_extra && &pool == stage_pool;  // built for the stages only
     for (const Algorithm* a : algorithms) {
@@ -478,7 +482,11 @@ int run(const Options& options, std::ostream& out) {
           e->answer_level = level;
           e->pool = &pool;
           e->floor = is_floor(a);
-          e->score = score_entry(*a, level, pool);
+          e->score = score_entry(*a, level, pool, options.isolation, e->faults);
+          if (!e->faults.empty()) {
+            faulted.push_back(std::move(e));
+            continue;
+          }
           if (options.count_operations)
             if (auto ops = count_operations(*a, level, pool)) e->ops = ops;
           entries.push_back(std::move(e));
@@ -501,6 +509,18 @@ int run(const Options& options, std::ostream& out) {
         }
       }
     }
+  }
+
+  for (const auto& e : faulted) {
+    std::size_t crashes = 0;
+    for (const Fault& f : e->faults) crashes += f.fate == Fate::crash;
+    const Fault& first = e->faults.front();
+    Case c;
+    c.name = e->pool->name() + "#" + std::to_string(first.index);
+    c.pair = e->pool->pairs[first.index];
+    out << "not timed: " << e->name() << ": " << crashes << " crash(es), " << e->faults.size() - crashes
+        << " timeout(s) when checked; first: " << to_string(first.fate) << " (" << first.detail << ") on\n"
+        << format_case(c, NumberStyle::g17) << '\n' << format_case(c, NumberStyle::hex) << '\n';
   }
 
   // ---- Google Benchmark ----
@@ -794,7 +814,17 @@ int run(const Options& options, std::ostream& out) {
         pool_json.push_back({{"name", p.name()}, {"size", p.size()}, {"intersecting", p.intersecting()},
                              {"seed", hex64(p.seed)}, {"stages", stages}});
       }
-      doc["tritri"] = {{"pools", pool_json},
+      nlohmann::json untimed = nlohmann::json::array();
+      for (const auto& e : faulted) {
+        nlohmann::json faults = nlohmann::json::array();
+        for (const Fault& f : e->faults)
+          faults.push_back({{"pair", f.index}, {"fate", to_string(f.fate)}, {"detail", f.detail},
+                            {"line", format_case(Case{e->pool->name() + "#" + std::to_string(f.index), e->pool->pairs[f.index], {}, "", 0})}});
+        untimed.push_back({{"name", e->name()}, {"algorithm", e->algo}, {"level", e->level},
+                           {"workload", e->pool->name()}, {"faults", faults}});
+      }
+      doc["tritri"] = {{"not_timed", untimed},
+                       {"pools", pool_json},
                        {"results", summary},
                        {"harness",
                         {{"floor_share_of_fastest",

@@ -11,6 +11,7 @@
 
 #include "bench/pools.hpp"
 #include "casefile.hpp"
+#include "isolation.hpp"
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"
 
@@ -43,6 +44,9 @@ struct Options {
   std::string family_source;       // where they came from, for the context
   bool quick = false;
   bool count_operations = true;
+  // Each algorithm is first run on each pool in a child process: one that crashes or hangs there
+  // is reported with the pair responsible and not timed (timing runs in this process).
+  IsolationOptions isolation;
   bool list_only = false;          // print the benchmark names and exit
 };
 

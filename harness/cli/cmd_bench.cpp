@@ -8,9 +8,10 @@ namespace tritri::cli {
 
 int run_bench(int argc, char** argv) {
   Args args(argc, argv,
-            {"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
-             "--json", "--cases"},
-            {"--quick", "--no-interleave", "--no-ops", "--list"});
+            with({"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
+                  "--json", "--cases"},
+                 kRunValuedOptions),
+            with({"--quick", "--no-interleave", "--no-ops", "--list"}, kRunFlags));
   if (args.help()) {
     std::cout
         << "usage: tritri bench [--quick] [--algo NAME]... [--level L]... [--workload W]...\n"
@@ -51,12 +52,24 @@ int run_bench(int argc, char** argv) {
            "  --cases FILE       case files for the family workloads (repeatable), instead of the\n"
            "                     corpus generator's families\n"
            "  --list             list the benchmarks' names and exit\n\n"
+           "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
+           "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
+           "                     process), a pair that makes no progress for S seconds is a timeout\n"
+           "                     (default 2); an algorithm that crashes or hangs on a pool is\n"
+           "                     reported with the pair, paste-ready, and not timed on that pool\n"
+           "  --no-isolation     check in this process (a crash ends the run)\n\n"
+           "Process plug-ins (--exec) are checked for correctness only: use tritri check.\n\n"
            "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments.\n";
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
 
+  if (!args.values("--exec").empty())
+    throw UsageError("process plug-ins (--exec) cannot be timed: each answer crosses a pipe. Check them with "
+                     "'tritri check --exec'; time a shared-library plug-in with --plugin");
+  load_external_algorithms(args);
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
+  options.isolation = isolation_options(args);
   std::vector<std::string> names;
   for (const auto& v : args.values("--algo")) names.push_back(v);
   if (!names.empty()) options.algorithms = select_algorithms(names);

@@ -2,7 +2,9 @@
 // coordinate is 13, aborts when one is 99, and loops forever when one is 666. Otherwise it
 // answers with a bounding-box test (right for disjoint boxes, often wrong otherwise).
 //
-// Built in several flavours (compile definitions) to test the loader's refusals.
+// Built in several flavours (compile definitions) to test the loader's refusals, and two
+// well-behaved ones for timing tests: BROKEN_WELL_BEHAVED never misbehaves, and BROKEN_SPIN=N
+// does the same work N times per pair (a known, injected slowdown).
 #include "tritri/plugin.h"
 
 #include <cstdlib>
@@ -40,10 +42,23 @@ void misbehave(const double* pair) {
     }
 }
 
+#ifndef BROKEN_SPIN
+#define BROKEN_SPIN 1
+#endif
+
 [[maybe_unused]] void overlap(const double* pairs, size_t n, unsigned char* out) {
   for (size_t i = 0; i < n; ++i) {
+#ifndef BROKEN_WELL_BEHAVED
     misbehave(pairs + 18 * i);
-    out[i] = boxes_overlap(pairs + 18 * i) ? TRITRI_YES : TRITRI_NO;
+#endif
+    bool answer = false;
+    for (int k = 0; k < BROKEN_SPIN; ++k) {
+      volatile const double* p = pairs + 18 * i;  // volatile: every repetition really reads the pair
+      double copy[18];
+      for (int j = 0; j < 18; ++j) copy[j] = p[j];
+      answer = boxes_overlap(copy);
+    }
+    out[i] = answer ? TRITRI_YES : TRITRI_NO;
   }
 }
 
