@@ -1,6 +1,7 @@
 #include "brute.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 
@@ -19,6 +20,7 @@ void register_brute(Registry& registry) {
   a.accepts_degenerate = false;  // tolerance: none, exact-zero determinant test
   a.overlap = overlap_batch<&brute::overlap<double>>;
   a.overlap_float = overlap_batch<&brute::overlap<float>>;
+  a.overlap_counted = overlap_batch<&brute::overlap<Counted>>;
   registry.add(std::move(a));
 }
 

@@ -1,6 +1,7 @@
 #include "guigue03.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 namespace {
@@ -26,6 +27,7 @@ void register_guigue03(Registry& registry) {
   Algorithm published = entry("guigue03", "the published overlap test: orientation signs only, no construction");
   published.overlap = overlap_batch<&guigue03::overlap<double>>;
   published.overlap_float = overlap_batch<&guigue03::overlap<float>>;
+  published.overlap_counted = overlap_batch<&guigue03::overlap<Counted>>;
   registry.add(std::move(published));
 
   Algorithm with_segment = entry(
@@ -35,6 +37,8 @@ void register_guigue03(Registry& registry) {
   with_segment.segment = segment_batch<&guigue03::segment<double>>;
   with_segment.overlap_float = overlap_batch<&guigue03::overlap_with_segment<float>>;
   with_segment.segment_float = segment_batch<&guigue03::segment<float>>;
+  with_segment.overlap_counted = overlap_batch<&guigue03::overlap_with_segment<Counted>>;
+  with_segment.segment_counted = segment_batch<&guigue03::segment<Counted>>;
   registry.add(std::move(with_segment));
 }
 

@@ -1,6 +1,7 @@
 #include "held97.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 namespace {
@@ -36,6 +37,8 @@ void register_held97(Registry& registry) {
   published.segment = segment_batch<&held97::segment<double, true>>;
   published.overlap_float = overlap_batch<&held97::overlap<float, true>>;
   published.segment_float = segment_batch<&held97::segment<float, true>>;
+  published.overlap_counted = overlap_batch<&held97::overlap<Counted, true>>;
+  published.segment_counted = segment_batch<&held97::segment<Counted, true>>;
   registry.add(std::move(published));
 
   Algorithm exact = entry(
@@ -46,6 +49,8 @@ void register_held97(Registry& registry) {
   exact.segment = segment_batch<&held97::segment<double, false>>;
   exact.overlap_float = overlap_batch<&held97::overlap<float, false>>;
   exact.segment_float = segment_batch<&held97::segment<float, false>>;
+  exact.overlap_counted = overlap_batch<&held97::overlap<Counted, false>>;
+  exact.segment_counted = segment_batch<&held97::segment<Counted, false>>;
   registry.add(std::move(exact));
 }
 

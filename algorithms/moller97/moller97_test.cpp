@@ -3,6 +3,7 @@
 
 #include "casefile.hpp"
 #include "oracle/oracle.hpp"
+#include "tritri/counting.hpp"
 
 #include <gtest/gtest.h>
 
@@ -124,6 +125,35 @@ TEST(Moller97, AbsoluteSnapMakesNearbySmallTrianglesTouch) {
   ASSERT_FALSE(oracle_label(hovering).overlap);
   EXPECT_TRUE((overlap<double, true>(hovering)));
   EXPECT_FALSE((overlap<double, false>(hovering)));
+}
+
+// The counting instantiation computes exactly what double computes: same answers everywhere,
+// on the small-integer grid (where contacts are exact and the last bit decides) as in general
+// position, or the operation counts would be of another run.
+TEST(Moller97, CountedInstantiationAnswersExactlyAsDouble) {
+  std::mt19937_64 rng(1997);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> grid(-3, 3);
+  int compared = 0;
+  for (int i = 0; i < 4000; ++i) {
+    auto coordinate = [&] { return i % 2 ? unit(rng) : static_cast<double>(grid(rng)); };
+    TrianglePair p;
+    for (int v = 0; v < 3; ++v) {
+      p.t1[v] = {coordinate(), coordinate(), coordinate()};
+      p.t2[v] = {coordinate(), coordinate(), coordinate()};
+    }
+    if (oracle_label(p).degenerate) continue;
+    ++compared;
+    const auto c = cast<Counted>(p);
+    ASSERT_EQ((overlap<Counted, true>(c)), (overlap<double, true>(p))) << i;
+    ASSERT_EQ((overlap<Counted, false>(c)), (overlap<double, false>(p))) << i;
+    ASSERT_EQ((overlap_division_free<Counted, true>(c)), (overlap_division_free<double, true>(p))) << i;
+    const SegmentAnswer sc = segment<Counted, true>(c), sd = segment<double, true>(p);
+    ASSERT_EQ(sc.kind, sd.kind) << i;
+    ASSERT_EQ(sc.p, sd.p) << i;
+    ASSERT_EQ(sc.q, sd.q) << i;
+  }
+  EXPECT_GT(compared, 3500);
 }
 
 TEST(Moller97, FloatInstantiationAnswersTheBuiltinCases) {

@@ -1,6 +1,7 @@
 #include "sabharwal15.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 namespace {
@@ -32,6 +33,8 @@ void register_sabharwal15(Registry& registry) {
   published.segment = segment_batch<&published_segment<double>>;
   published.relation_float = relation_batch<&published_relation<float>>;
   published.segment_float = segment_batch<&published_segment<float>>;
+  published.relation_counted = relation_batch<&published_relation<Counted>>;
+  published.segment_counted = segment_batch<&published_segment<Counted>>;
   registry.add(std::move(published));
 
   Algorithm plane = entry(
@@ -42,6 +45,8 @@ void register_sabharwal15(Registry& registry) {
   plane.segment = segment_batch<&plane_segment<double>>;
   plane.relation_float = relation_batch<&plane_relation<float>>;
   plane.segment_float = segment_batch<&plane_segment<float>>;
+  plane.relation_counted = relation_batch<&plane_relation<Counted>>;
+  plane.segment_counted = segment_batch<&plane_segment<Counted>>;
   registry.add(std::move(plane));
 }
 

@@ -1,6 +1,7 @@
 #include "shen03.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 
@@ -21,6 +22,7 @@ void register_shen03(Registry& registry) {
   a.accepts_degenerate = false;
   a.overlap = overlap_batch<&shen03::overlap<double>>;
   a.overlap_float = overlap_batch<&shen03::overlap<float>>;
+  a.overlap_counted = overlap_batch<&shen03::overlap<Counted>>;
   registry.add(std::move(a));
 }
 

@@ -1,6 +1,7 @@
 #include "tropp06.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 namespace {
@@ -29,6 +30,7 @@ void register_tropp06(Registry& registry) {
       "edge vectors computed inside the call");
   published.overlap = overlap_batch<&tropp06::overlap<double, Projection::xy, false>>;
   published.overlap_float = overlap_batch<&tropp06::overlap<float, Projection::xy, false>>;
+  published.overlap_counted = overlap_batch<&tropp06::overlap<Counted, Projection::xy, false>>;
   registry.add(std::move(published));
 
   Algorithm fixed = entry(
@@ -38,6 +40,7 @@ void register_tropp06(Registry& registry) {
       "through C1 tested against edge 3");
   fixed.overlap = overlap_batch<&tropp06::overlap<double, Projection::dominant, true>>;
   fixed.overlap_float = overlap_batch<&tropp06::overlap<float, Projection::dominant, true>>;
+  fixed.overlap_counted = overlap_batch<&tropp06::overlap<Counted, Projection::dominant, true>>;
   registry.add(std::move(fixed));
 }
 

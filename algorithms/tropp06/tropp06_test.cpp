@@ -4,6 +4,7 @@
 
 #include "casefile.hpp"
 #include "oracle/oracle.hpp"
+#include "tritri/counting.hpp"
 
 #include <gtest/gtest.h>
 
@@ -165,6 +166,89 @@ TEST(Tropp06Defects, CutLineThroughC1IsComparedWithC1Only) {
   const TrianglePair touching{kFloor, tri({-1, 1, -1}, {-1, 1, 1}, {1, -1, 1})};
   ASSERT_TRUE(oracle_label(touching).overlap);
   EXPECT_NE((intersect<double, Projection::dominant, true>(touching)), kDisjoint);
+}
+
+// ---- the counting instantiation (tritri bench's operation counts) ----
+
+// Random reals: general position, where no answer hangs on the last bit. Small integers and
+// the built-in cases: vertices on planes and edges, coplanar pairs, exact contacts, where one
+// may. Zero-area triangles are left out, as the harness leaves them out for this port.
+struct CountingPairs {
+  std::vector<TrianglePair> general, singular;
+};
+
+CountingPairs counting_pairs() {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> real(-1, 1);
+  std::uniform_int_distribution<int> grid(-2, 2);
+  CountingPairs out;
+  while (out.general.size() < 300 || out.singular.size() < 300) {
+    const bool on_grid = out.singular.size() < out.general.size();
+    TrianglePair p;
+    for (auto* t : {&p.t1, &p.t2})
+      for (int i = 0; i < 3; ++i)
+        (*t)[i] = on_grid ? Vec3<double>(grid(rng), grid(rng), grid(rng))
+                          : Vec3<double>(real(rng), real(rng), real(rng));
+    if (!has_degenerate_triangle(p)) (on_grid ? out.singular : out.general).push_back(p);
+  }
+  for (const Case& c : builtin_cases())
+    if (!has_degenerate_triangle(c.pair)) out.singular.push_back(c.pair);
+  return out;
+}
+
+// Counted must answer exactly as double does, on singular pairs as on general ones: its
+// arithmetic, the order of Eigen's sums included (tritri/counting.hpp), is double's.
+TEST(Tropp06Counted, GivesTheDoubleAnswers) {
+  const CountingPairs pairs = counting_pairs();
+  int singular_disagreements = 0;
+  auto check = [&](const TrianglePair& p, bool general) {
+    SCOPED_TRACE(format_case({"c", p, {}, "", 0}, NumberStyle::hex));
+    const PairT<Counted> c = cast<Counted>(p);
+    auto agree = [&](bool same, const char* what) {
+      if (general) EXPECT_TRUE(same) << what;
+      singular_disagreements += !general && !same;
+    };
+    // the edge-pair code, not only the boolean: the counted run must take the same path
+    agree(intersect<double>(p) == intersect<Counted>(c), "published");
+    agree((intersect<double, Projection::dominant, true>(p)) == (intersect<Counted, Projection::dominant, true>(c)),
+          "fixed");
+  };
+  for (const TrianglePair& p : pairs.general) check(p, true);
+  for (const TrianglePair& p : pairs.singular) check(p, false);
+  RecordProperty("singular_disagreements", singular_disagreements);
+  EXPECT_EQ(singular_disagreements, 0);
+}
+
+OpCounts counts_of(const TrianglePair& p) {
+  op_counts() = {};
+  (void)intersect<Counted>(cast<Counted>(p));
+  return op_counts();
+}
+
+// A pair rejected at step 3, counted by hand: edge vectors 4×3 add, r 3 add, N_A = P1×P2
+// (6 mul, 3 add), dq1, dq2, dr (9 mul, 6 add), βi·dqi² (2 mul); each legal() stops at its
+// second comparison (β < 0), then dq1 = 0? (1 cmp).
+TEST(Tropp06Counted, AStep3RejectCostsWhatTheCodeSays) {
+  EXPECT_EQ(counts_of({kFloor, tri({0, 0, 2}, {4, 0, 3}, {0, 4, 5})}), (OpCounts{24, 17, 0, 5, 0}));
+}
+
+// Division-free as the paper says, and every pair costs at least the step-3 reject's set-up.
+TEST(Tropp06Counted, NoDivisionsAndNoSquareRoots) {
+  const CountingPairs both = counting_pairs();
+  std::vector<TrianglePair> pairs = both.general;
+  pairs.insert(pairs.end(), both.singular.begin(), both.singular.end());
+  OpCounts total;
+  for (const TrianglePair& p : pairs) {
+    const OpCounts c = counts_of(p);
+    EXPECT_EQ(c.div, 0u);
+    EXPECT_EQ(c.sqrt, 0u);
+    EXPECT_GE(c.add, 24u);
+    EXPECT_GE(c.mul, 17u);
+    total.add += c.add, total.mul += c.mul, total.cmp += c.cmp;
+  }
+  // those that reach step 5 cost far more than a reject, so the mean lies well above it
+  EXPECT_GT(total.mul, 17u * pairs.size() + pairs.size());
+  EXPECT_GT(total.cmp, 5u * pairs.size());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "yuhe13.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/counting.hpp"
 
 namespace tritri {
 namespace {
@@ -20,6 +21,21 @@ Algorithm entry(std::string name, std::string summary) {
   return a;
 }
 
+// Yu–He's Table 1 times the transform into A's frame and the test in that frame apart. The
+// stage adapters take double pairs, so a transformed pair travels as a TrianglePair.
+TrianglePair in_frame_of_a(const TrianglePair& pair) {
+  const yuhe13::Framed<double> f = yuhe13::transform(pair);
+  return {f.a, f.b};
+}
+
+// The test in the frame reads only the transformed triangles, never the frame's axes.
+RelationAnswer test_in_frame(const TrianglePair& framed) {
+  yuhe13::Framed<double> f;
+  f.a = framed.t1;
+  f.b = framed.t2;
+  return answer_with(yuhe13::intersect_in_frame<double, false>(f).code);
+}
+
 }  // namespace
 
 void register_yuhe13(Registry& registry) {
@@ -32,6 +48,11 @@ void register_yuhe13(Registry& registry) {
   published.segment = segment_batch<&segment<double, false>>;
   published.relation_float = relation_batch<&relation<float, false>>;
   published.segment_float = segment_batch<&segment<float, false>>;
+  published.relation_counted = relation_batch<&relation<Counted, false>>;
+  published.segment_counted = segment_batch<&segment<Counted, false>>;
+  published.stages = {{"transform", stage_run<&in_frame_of_a>},
+                      {"frame-test", stage_run<&test_in_frame>, stage_prepare<&in_frame_of_a>},
+                      {"both", stage_run<&relation<double, false>>}};
   registry.add(std::move(published));
 
   Algorithm literal = entry(
@@ -41,6 +62,8 @@ void register_yuhe13(Registry& registry) {
   literal.segment = segment_batch<&segment<double, true>>;
   literal.relation_float = relation_batch<&relation<float, true>>;
   literal.segment_float = segment_batch<&segment<float, true>>;
+  literal.relation_counted = relation_batch<&relation<Counted, true>>;
+  literal.segment_counted = segment_batch<&segment<Counted, true>>;
   registry.add(std::move(literal));
 }
 

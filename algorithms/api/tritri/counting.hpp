@@ -114,3 +114,22 @@ struct NumTraits<tritri::Counted> : NumTraits<double> {
   static inline int digits10() { return NumTraits<double>::digits10(); }
 };
 }  // namespace Eigen
+
+namespace Eigen::internal {
+// Sums of Counted coefficients are added in storage order, (x + y) + z, which is the order Eigen
+// uses for the doubles of a fixed-size Vec3 here. Its own unrolled reduction for a type it cannot
+// vectorise pairs them the other way, x + (y + z): a different last bit in a dot product, enough
+// to flip an answer that the last bit decides, and then the counts would be of another run.
+template <class Evaluator>
+struct redux_impl<scalar_sum_op<tritri::Counted, tritri::Counted>, Evaluator, DefaultTraversal, CompleteUnrolling> {
+  using Scalar = tritri::Counted;
+  template <class Xpr>
+  static Scalar run(const Evaluator& eval, const scalar_sum_op<Scalar, Scalar>& sum, const Xpr& xpr) {
+    Scalar total = eval.coeffByOuterInner(0, 0);
+    for (Index outer = 0; outer < xpr.outerSize(); ++outer)
+      for (Index inner = outer == 0 ? 1 : 0; inner < xpr.innerSize(); ++inner)
+        total = sum(total, eval.coeffByOuterInner(outer, inner));
+    return total;
+  }
+};
+}  // namespace Eigen::internal
