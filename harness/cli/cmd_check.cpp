@@ -4,10 +4,56 @@
 #include "commands.hpp"
 #include "io.hpp"
 
+#include <deque>
 #include <iostream>
+#include <map>
+#include <tuple>
 
 namespace tritri::cli {
 namespace {
+
+// --float: each chosen algorithm that has float instantiations is replaced by a copy answering
+// through them, named NAME@float, so the stability report can compare float with double on
+// the same cases through the same scoring. Algorithms with none (FCL, CGAL call libraries on
+// double) are left out and named on stderr. The copies live as long as the process, since
+// results keep pointers to them.
+std::vector<const Algorithm*> float_instantiations(const std::vector<const Algorithm*>& chosen) {
+  static std::deque<Algorithm> copies;
+  std::vector<const Algorithm*> out;
+  std::string skipped;
+  for (const Algorithm* a : chosen) {
+    if (!a->overlap_float && !a->relation_float && !a->segment_float) {
+      skipped += (skipped.empty() ? "" : ", ") + a->name;
+      continue;
+    }
+    Algorithm f = *a;
+    f.name = a->name + "@float";
+    f.summary = a->summary + " [float instantiation: each pair rounded to float]";
+    f.overlap = a->overlap_float;
+    f.relation = a->relation_float;
+    f.segment = a->segment_float;
+    f.overlap_float = f.overlap_counted = nullptr;
+    f.relation_float = f.relation_counted = nullptr;
+    f.segment_float = f.segment_counted = nullptr;
+    f.stages.clear();
+    out.push_back(&copies.emplace_back(std::move(f)));
+  }
+  if (!skipped.empty()) std::cerr << "tritri check --float: no float instantiation, left out: " << skipped << '\n';
+  if (out.empty()) throw UsageError("--float: none of the chosen algorithms has a float instantiation");
+  return out;
+}
+
+// --json-max-failures N: the JSON keeps only the first N disagreements of each algorithm ×
+// family × level (the tallies still count every case). On the default corpus the full list runs
+// to hundreds of megabytes, most of it the same case under its 72 symmetry variants.
+CheckResult with_failures_capped(const CheckResult& result, const std::vector<Case>& cases, std::size_t cap) {
+  CheckResult capped = result;
+  capped.failures.clear();
+  std::map<std::tuple<std::string, std::string, Level>, std::size_t> kept;
+  for (const Failure& f : result.failures)
+    if (kept[{f.algorithm, cases[f.case_index].family(), f.level}]++ < cap) capped.failures.push_back(f);
+  return capped;
+}
 
 void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::size_t limit) {
   std::cout << title << ": " << rows.size() << '\n';
@@ -25,12 +71,14 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
 }  // namespace
 
 int run_check(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures"}, kRunValuedOptions),
-            with({"--quiet", "--confusion"}, kRunFlags));
+  Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures"},
+                 kRunValuedOptions),
+            with({"--quiet", "--confusion", "--float"}, kRunFlags));
   if (args.help()) {
     std::cout
         << "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
            "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
+           "                    [--float] [--json-max-failures N]\n"
            "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
            "                    FILE...\n\n"
            "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
@@ -54,8 +102,14 @@ int run_check(int argc, char** argv) {
            "                       is new; list the recorded ones that no longer occur\n"
            "  --write-baseline F   record this run's disagreements as a baseline\n"
            "  --max-failures N     how many disagreements to print (default 20)\n"
+           "  --json-max-failures N  keep only the first N disagreements per algorithm x family x\n"
+           "                       level in the JSON (default: all); the tallies count every case\n"
            "  --confusion          print every confusion cell, the right ones too\n"
            "  --quiet              print only the tables (and the baseline comparison)\n"
+           "  --float              run each algorithm's float instantiation instead (named NAME@float;\n"
+           "                       each pair is rounded to float inside the call and judged against\n"
+           "                       the oracle on the double input); algorithms without one are left\n"
+           "                       out. No baseline records these names.\n"
         << kRunOptionsHelp
         << "\n"
            "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
@@ -64,7 +118,8 @@ int run_check(int argc, char** argv) {
   }
   load_external_algorithms(args);
   // Named algorithms, else every built-in one plus every plug-in given.
-  const auto algorithms = select_algorithms(args.values("--algo"));
+  const auto algorithms = args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")))
+                                               : select_algorithms(args.values("--algo"));
   const std::size_t max_failures = args.count("--max-failures", 20);
   // Read the baselines before the (possibly long) run, so a wrong path fails at once.
   Baseline recorded;
@@ -85,7 +140,11 @@ int run_check(int argc, char** argv) {
   }
   if (auto json = args.value("--json"))
     write_file_atomically(*json, [&](std::ostream& out) {
-      write_check_json(out, result, cases, oracle, args.positional());
+      if (args.value("--json-max-failures"))
+        write_check_json(out, with_failures_capped(result, cases, args.count("--json-max-failures", 0)), cases,
+                         oracle, args.positional());
+      else
+        write_check_json(out, result, cases, oracle, args.positional());
     });
   if (auto out_path = args.value("--write-baseline"))
     write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });

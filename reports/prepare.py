@@ -1,0 +1,173 @@
+#!/usr/bin/env python3
+"""Helpers scripts/run calls between the tritri commands (not part of the report itself).
+
+  prepare.py derive CORPUS_DIR SUITES_DIR OUT_DIR     regrouped case files for check (see derive.py)
+  prepare.py manifest CORPUS_DIR OUT.json --seed S --command CMD
+  prepare.py provenance OUT.json --build-dir DIR --command CMD --started ISO
+  prepare.py steps STEPS.tsv OUT.json [--baseline-inputs TEXT --baseline-verdict TEXT]
+
+Every JSON file is written beside its final name and renamed into place.
+"""
+
+import argparse
+import datetime
+import os
+import platform
+import socket
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from tritri_report import derive  # noqa: E402
+
+PACKAGES = ["g++", "cmake", "libcgal-dev", "libfcl-dev", "libeigen3-dev", "libbenchmark-dev", "libgmp-dev",
+            "python3-matplotlib"]
+
+
+def _run(cmd):
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True, timeout=20).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return ""
+
+
+def _cpu_model():
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def _memory():
+    try:
+        with open("/proc/meminfo", encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("MemTotal"):
+                    return "%.1f GiB" % (int(line.split()[1]) / 1024 / 1024)
+    except OSError:
+        pass
+    return None
+
+
+def _os_name():
+    try:
+        with open("/etc/os-release", encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("PRETTY_NAME="):
+                    return line.split("=", 1)[1].strip().strip('"')
+    except OSError:
+        pass
+    return platform.platform()
+
+
+def _cmake_cache(build_dir):
+    values = {}
+    try:
+        with open(os.path.join(build_dir, "CMakeCache.txt"), encoding="utf-8") as f:
+            for line in f:
+                if ":" in line and "=" in line and not line.startswith(("#", "//")):
+                    key, _, value = line.strip().partition("=")
+                    values[key.split(":", 1)[0]] = value
+    except OSError:
+        pass
+    return values
+
+
+def provenance(args):
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    cache = _cmake_cache(args.build_dir)
+    build_type = cache.get("CMAKE_BUILD_TYPE", "")
+    flags = " ".join(x for x in (cache.get("CMAKE_CXX_FLAGS", ""),
+                                 cache.get("CMAKE_CXX_FLAGS_" + build_type.upper(), ""),
+                                 "-ffp-contract=off") if x)
+    packages = {}
+    for p in PACKAGES:
+        v = _run(["dpkg-query", "-W", "-f=${Version}", p])
+        if v:
+            packages[p] = v
+    try:
+        import matplotlib
+        mpl = matplotlib.__version__
+    except ImportError:
+        mpl = "not installed"
+    cpu = _cpu_model()
+    cores = os.cpu_count()
+    sha = _run(["git", "-C", root, "rev-parse", "HEAD"])
+    dirty = bool(_run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"]))
+    doc = {
+        "schema": "tritri-provenance/1",
+        "machine_name": "%s (%s, %s cores)" % (socket.gethostname(), cpu, cores),
+        "hostname": socket.gethostname(),
+        "cpu": cpu,
+        "cores": cores,
+        "memory": _memory(),
+        "os": _os_name(),
+        "kernel": platform.release(),
+        "compiler": (_run([cache.get("CMAKE_CXX_COMPILER", "c++"), "--version"]).splitlines() or ["unknown"])[0],
+        "build_flags": "%s: %s" % (build_type or "?", flags),
+        "packages": packages,
+        "python": "Python %s, matplotlib %s" % (platform.python_version(), mpl),
+        "git_sha": sha or "unknown",
+        "git_dirty": dirty,
+        "command": args.command,
+        "started": args.started,
+        "finished": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
+    }
+    derive.write_json(args.out, doc)
+
+
+def steps(args):
+    rows = []
+    with open(args.tsv, encoding="utf-8") as f:
+        for line in f:
+            parts = line.rstrip("\n").split("\t")
+            if len(parts) >= 3:
+                rows.append({"name": parts[0], "seconds": float(parts[1]), "status": parts[2],
+                             "command": parts[3] if len(parts) > 3 else ""})
+    doc = {"schema": "tritri-steps/1", "steps": rows}
+    if args.baseline_verdict:
+        doc["baseline"] = {"inputs": args.baseline_inputs, "verdict": args.baseline_verdict}
+    derive.write_json(args.out, doc)
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description="helpers for scripts/run")
+    sub = p.add_subparsers(dest="what", required=True)
+    d = sub.add_parser("derive")
+    d.add_argument("corpus_dir")
+    d.add_argument("suites_dir")
+    d.add_argument("out_dir")
+    m = sub.add_parser("manifest")
+    m.add_argument("corpus_dir")
+    m.add_argument("out")
+    m.add_argument("--seed", default="1")
+    m.add_argument("--command", default="")
+    v = sub.add_parser("provenance")
+    v.add_argument("out")
+    v.add_argument("--build-dir", required=True)
+    v.add_argument("--command", default="")
+    v.add_argument("--started", default="")
+    s = sub.add_parser("steps")
+    s.add_argument("tsv")
+    s.add_argument("out")
+    s.add_argument("--baseline-inputs", default="")
+    s.add_argument("--baseline-verdict", default="")
+    args = p.parse_args(argv)
+    if args.what == "derive":
+        derive.write_derived(args.corpus_dir, args.suites_dir, args.out_dir)
+    elif args.what == "manifest":
+        derive.write_json(args.out, derive.manifest(args.corpus_dir, args.seed, args.command))
+    elif args.what == "provenance":
+        provenance(args)
+    else:
+        steps(args)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

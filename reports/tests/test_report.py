@@ -1,0 +1,375 @@
+"""The report builds from a small fixed run (tests/fixture/), every figure is written and
+non-empty, and the tables say what the JSON says.
+
+The expectations are computed here from the fixture's JSON directly, not through the report's
+own aggregation code, so a slip in either shows up as a mismatch.
+"""
+
+import json
+import os
+import shutil
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+
+from tritri_report import analysis, derive, markdown, papers, report  # noqa: E402
+
+FIXTURE = os.path.join(HERE, "fixture")
+
+
+def load(name):
+    with open(os.path.join(FIXTURE, name), encoding="utf-8") as f:
+        return json.load(f)
+
+
+def section(text, heading):
+    """The text under a '## ' or '### ' heading, up to the next heading of any level."""
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        if line.lstrip("#").strip() == heading and line.startswith("#"):
+            out = []
+            for rest in lines[i + 1:]:
+                if rest.startswith("#"):
+                    break
+                out.append(rest)
+            return "\n".join(out)
+    raise AssertionError("no heading %r" % heading)
+
+
+def tables_in(text, heading):
+    return markdown.parse_tables(section(text, heading))
+
+
+def ns_text(x):
+    return markdown.ns(x)
+
+
+class ReportFromFixture(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.out = tempfile.mkdtemp(prefix="tritri-report-test-")
+        cls.report = report.build_report(FIXTURE, cls.out)
+        with open(os.path.join(cls.out, "README.md"), encoding="utf-8") as f:
+            cls.text = f.read()
+        cls.check = load("check.json")
+        cls.bench = load("bench.json")
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.out, ignore_errors=True)
+
+    def algorithms(self):
+        return [a["name"] for a in self.check["algorithms"] if a["name"] not in ("null", "floor")]
+
+    def tallies(self, algorithm):
+        return [t for t in self.check["tallies"] if t["algorithm"] == algorithm]
+
+    # ---- figures ----
+    def test_every_figure_is_written_and_nonempty(self):
+        self.assertGreater(len(self.report.figures), 10)
+        for rel in self.report.figures:
+            path = os.path.join(self.out, rel)
+            self.assertTrue(os.path.isfile(path), rel)
+            self.assertGreater(os.path.getsize(path), 1000, rel)
+            with open(path, "rb") as f:
+                self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n", rel)
+
+    def test_every_referenced_figure_exists_and_every_written_one_is_referenced(self):
+        import re
+        referenced = set(re.findall(r"!\[[^\]]*\]\(([^)]+)\)", self.text))
+        self.assertEqual(referenced, set(self.report.figures))
+        on_disk = {"figures/" + n for n in os.listdir(os.path.join(self.out, "figures"))}
+        self.assertEqual(on_disk, set(self.report.figures))
+
+    def test_the_seven_parts_are_there(self):
+        for heading in ("1 Correctness", "2 Speed against error", "3 Time against intersection ratio",
+                        "4 Stability", "5 The papers' tables", "6 Failure gallery", "7 Provenance"):
+            self.assertIn("## " + heading + "\n", self.text)
+
+    def test_figures_for_each_part(self):
+        names = {os.path.basename(f) for f in self.report.figures}
+        for expected in ("correctness-heatmap.png", "speed-error.png", "time-ratio.png", "stability-tilt.png",
+                         "stability-scale.png", "stability-translate.png", "stability-perturb.png",
+                         "float-double.png", "sabharwal-types.png"):
+            self.assertIn(expected, names)
+        self.assertTrue(any(n.startswith("gallery-") for n in names))
+
+    # ---- part 1 ----
+    def test_per_algorithm_table_matches_the_tallies(self):
+        (header, rows), = tables_in(self.text, "1.1 Per algorithm")
+        self.assertEqual(header[:8], ["algorithm", "cases", "FP", "FN", "relation", "unsupported", "crash",
+                                      "timeout"])
+        self.assertEqual([r[0] for r in rows], self.algorithms())
+        for r in rows:
+            ts = self.tallies(r[0])
+            self.assertEqual(int(r[1]), sum(t["cases"] for t in ts))
+            self.assertEqual(int(r[2]), sum(t["false_positives"] for t in ts))
+            self.assertEqual(int(r[3]), sum(t["false_negatives"] for t in ts))
+            mis = [t["misclassified"] for t in ts if t["misclassified"] is not None]
+            self.assertEqual(r[4], str(sum(mis)) if mis else "-")
+            self.assertEqual(int(r[5]), sum(t["unsupported"] for t in ts))
+            self.assertEqual(int(r[6]), sum(t["crashes"] for t in ts))
+            self.assertEqual(int(r[7]), sum(t["timeouts"] for t in ts))
+
+    def test_per_family_cells_match_the_tallies(self):
+        (header, rows), = tables_in(self.text, "1.2 Overlap errors per family")
+        self.assertEqual(header[1:], self.check["families"])
+        seen = 0
+        for r in rows:
+            for fam, cell in zip(header[1:], r[1:]):
+                t = [x for x in self.tallies(r[0]) if x["family"] == fam][0]
+                fp, fn = t["false_positives"], t["false_negatives"]
+                self.assertEqual(cell, "0" if fp + fn == 0 else "%d/%d" % (fp, fn), (r[0], fam))
+                seen += 1
+        self.assertEqual(seen, len(self.algorithms()) * len(self.check["families"]))
+
+    def test_summary_errors_match_the_tallies(self):
+        (header, rows), = tables_in(self.text, "Summary")
+        self.assertEqual(header[1], "overlap errors")
+        for r in rows:
+            ts = self.tallies(r[0])
+            self.assertEqual(int(r[1]), sum(t["false_positives"] + t["false_negatives"] for t in ts))
+
+    def test_asymmetry_counts_every_base_case(self):
+        sym = load("check-symmetry.json")
+        tables = tables_in(self.text, "1.5 Asymmetry across the symmetric variants")
+        header, rows = tables[0]
+        for r in rows:
+            groups = [t for t in sym["tallies"] if t["algorithm"] == r[0]]
+            bad, base = (int(x) for x in r[1].split(" / "))
+            self.assertEqual(base, len(groups))
+            # A base case whose variants are all right cannot be asymmetric.
+            clean = sum(1 for t in groups if t["false_positives"] + t["false_negatives"] == 0 and
+                        not any(c["answer"] != c["oracle"] for c in (t["confusion"] or [])))
+            self.assertLessEqual(bad, base - clean)
+
+    def test_asymmetry_rule(self):
+        def tally(cases, fp=0, fn=0, confusion=None):
+            return {"cases": cases, "false_positives": fp, "false_negatives": fn, "unsupported": 0,
+                    "crashes": 0, "timeouts": 0, "confusion": confusion}
+        from tritri_report import data
+        self.assertFalse(data.group_is_asymmetric(tally(72)))
+        self.assertFalse(data.group_is_asymmetric(tally(72, fn=72)))
+        self.assertTrue(data.group_is_asymmetric(tally(72, fn=3)))
+        self.assertTrue(data.group_is_asymmetric(tally(72, confusion=[
+            {"answer": "cross", "oracle": "touch-point", "count": 70},
+            {"answer": "touch-point", "oracle": "touch-point", "count": 2}])))
+
+    # ---- parts 2 and 3 ----
+    def test_speed_error_table_matches_bench_and_check(self):
+        (header, rows), = tables_in(self.text, "2 Speed against error")
+        self.assertEqual(header[:3], ["algorithm", "level timed", "ns/pair"])
+        for r in rows:
+            entry = [e for e in self.bench["tritri"]["results"]
+                     if e["algorithm"] == r[0] and e["level"] == r[1] and e["workload"] == "ratio:0.50"]
+            self.assertEqual(len(entry), 1, r[0])
+            self.assertEqual(r[2], ns_text(entry[0]["ns_per_pair_median"]))
+            ts = [t for t in self.tallies(r[0]) if t["family"] != "random"]
+            judged = sum(t["cases"] - t["unsupported"] for t in ts)
+            wrong = sum(t["false_positives"] + t["false_negatives"] + t["crashes"] + t["timeouts"] for t in ts)
+            self.assertEqual(r[3], markdown.pct(wrong / judged, 3))
+
+    def test_ratio_table_matches_bench(self):
+        tables = tables_in(self.text, "3 Time against intersection ratio")
+        header, rows = tables[0]
+        rs = header[1:]
+        self.assertEqual(rs[0], "0.0")
+        self.assertEqual(rs[-1], "1.0")
+        for r in rows:
+            level = "overlap" if any(e["algorithm"] == r[0] and e["level"] == "overlap"
+                                     for e in self.bench["tritri"]["results"]) else "relation"
+            for rtext, cell in zip(rs, r[1:]):
+                w = "ratio:%.2f" % float(rtext)
+                e = [x for x in self.bench["tritri"]["results"]
+                     if x["algorithm"] == r[0] and x["level"] == level and x["workload"] == w][0]
+                self.assertEqual(cell, ns_text(e["ns_per_pair_median"]), (r[0], w))
+
+    def test_type_table_matches_bench(self):
+        (header, rows), = tables_in(self.text, "3.1 Time per intersection type")
+        self.assertEqual(sorted(header[1:]), ["area", "disjoint", "point", "segment"])
+        for r in rows:
+            for t, cell in zip(header[1:], r[1:]):
+                es = [x for x in self.bench["tritri"]["results"]
+                      if x["algorithm"] == r[0] and x["workload"] == "type:" + t]
+                levels = [x["level"] for x in es]
+                level = "overlap" if "overlap" in levels else "relation"
+                e = [x for x in es if x["level"] == level][0]
+                self.assertEqual(cell, ns_text(e["ns_per_pair_median"]), (r[0], t))
+
+    # ---- part 4 ----
+    def test_tilt_sweep_table_matches_the_sweep_tallies(self):
+        sweeps = load("check-sweeps.json")
+        tables = tables_in(self.text, "4.2 near-coplanar: T2 tilted off T1's plane")
+        header, rows = tables[-1]
+        for r in rows:
+            for label, cell in zip(header[1:], r[1:]):
+                k = label.replace("2^", "")
+                ts = [t for t in sweeps["tallies"] if t["algorithm"] == r[0] and t["family"] == "tilt:" + k]
+                judged = sum(t["cases"] - t["unsupported"] for t in ts)
+                wrong = sum(t["false_positives"] + t["false_negatives"] + t["crashes"] + t["timeouts"]
+                            for t in ts)
+                self.assertEqual(cell, markdown.pct(wrong / judged) if judged else "-", (r[0], label))
+
+    def test_float_table_matches_both_checks(self):
+        flt = load("check-float.json")
+        tables = tables_in(self.text, "4.10 Float against double")
+        header, rows = tables[0]
+        self.assertEqual(header[1:3], ["double, singular", "float, singular"])
+        self.assertTrue(rows)
+        for r in rows:
+            for chk, name, cell in ((self.check, r[0], r[1]), (flt, r[0] + "@float", r[2])):
+                ts = [t for t in chk["tallies"] if t["algorithm"] == name and t["family"] != "random"]
+                judged = sum(t["cases"] - t["unsupported"] for t in ts)
+                wrong = sum(t["false_positives"] + t["false_negatives"] + t["crashes"] + t["timeouts"]
+                            for t in ts)
+                self.assertEqual(cell, markdown.pct(wrong / judged), name)
+
+    # ---- part 5 ----
+    def test_sabharwal_table_quotes_the_paper_and_the_bench(self):
+        header, rows = tables_in(self.text, "Sabharwal & Leopold 2015, Table 1")[0]
+        by_type = {r[0]: r for r in rows}
+        for k, seconds in papers.SABHARWAL_TABLE1.items():
+            self.assertEqual(by_type[k][1], "%.3f ms" % (1000 * seconds))
+            e = [x for x in self.bench["tritri"]["results"]
+                 if x["algorithm"] == "sabharwal15" and x["workload"] == "type:" + k and x["level"] == "relation"]
+            self.assertEqual(by_type[k][3], ns_text(e[0]["ns_per_pair_median"]))
+        self.assertEqual(by_type["overall"][1], "1.353 ms")
+
+    def test_yuhe_suite_counts_match_the_check(self):
+        chk = load("check-yuhe13.json")
+        tables = tables_in(self.text, "Yu & He 2013, Table 1 and the singular suite")
+        header, rows = tables[1]
+        for r in rows:
+            fam = "yuhe13-" + r[1]
+            t = [x for x in chk["tallies"] if x["algorithm"] == r[0] and x["family"] == fam][0]
+            self.assertEqual(int(r[3]), t["cases"])
+            self.assertEqual(int(r[4]), t["false_positives"] + t["false_negatives"])
+        published = tables[0][1][:2]
+        self.assertEqual([r[3] for r in published], ["47 s", "31 s"])
+
+    # ---- parts 6 and 7 ----
+    def test_gallery_shows_listed_failures_with_coordinates(self):
+        text = section(self.text, "6 Failure gallery")
+        failures = self.check["failures"]
+        shown = [f for f in failures if "`%s`" % f["case"] in self.text]
+        self.assertTrue(shown)
+        for f in shown:
+            self.assertIn(f["line"], self.text)
+        self.assertIn("three orthographic views", text)
+
+    def test_provenance_names_machine_sha_seed_and_hash(self):
+        (header, rows), = tables_in(self.text, "7 Provenance")[:1]
+        values = dict((r[0], r[1]) for r in rows)
+        prov = load("provenance.json")
+        man = load("corpus.json")
+        self.assertEqual(values["machine"], prov["machine_name"])
+        self.assertEqual(values["git SHA"], prov["git_sha"])
+        self.assertEqual(values["corpus seed"], str(man["seed"]))
+        self.assertEqual(values["corpus SHA-256 (its files' names and bytes)"], man["sha256"])
+        self.assertEqual(values["bench seed"], self.bench["context"]["seed"])
+
+
+class MissingInputs(unittest.TestCase):
+    def test_an_empty_results_directory_gives_a_report_that_says_so(self):
+        src = tempfile.mkdtemp()
+        out = tempfile.mkdtemp()
+        try:
+            r = report.build_report(src, out)
+            with open(os.path.join(out, "README.md"), encoding="utf-8") as f:
+                text = f.read()
+            self.assertIn(markdown.NOT_MEASURED, text)
+            self.assertEqual(r.figures, [])
+        finally:
+            shutil.rmtree(src)
+            shutil.rmtree(out)
+
+    def test_check_without_bench_still_reports_correctness(self):
+        src = tempfile.mkdtemp()
+        out = tempfile.mkdtemp()
+        try:
+            shutil.copy(os.path.join(FIXTURE, "check.json"), src)
+            report.build_report(src, out)
+            with open(os.path.join(out, "README.md"), encoding="utf-8") as f:
+                text = f.read()
+            self.assertIn("### 1.1 Per algorithm", text)
+            self.assertIn("Needs both the check and the bench results: " + markdown.NOT_MEASURED, text)
+        finally:
+            shutil.rmtree(src)
+            shutil.rmtree(out)
+
+
+class Analysis(unittest.TestCase):
+    def test_pareto_frontier(self):
+        pts = [("a", 1.0, 0.5), ("b", 2.0, 0.1), ("c", 3.0, 0.2), ("d", 4.0, 0.0)]
+        self.assertEqual(analysis.pareto_frontier(pts), ["a", "b", "d"])
+
+    def test_crossings_interpolate_between_measured_ratios(self):
+        a = [(0.0, 10.0), (0.5, 20.0), (1.0, 30.0)]
+        b = [(0.0, 15.0), (0.5, 15.0), (1.0, 15.0)]
+        (r, t, noisy), = analysis.crossings(a, b)
+        self.assertAlmostEqual(r, 0.25)
+        self.assertAlmostEqual(t, 15.0)
+        self.assertFalse(noisy)
+        self.assertTrue(analysis.crossings(a, b, {0.0: 0.6, 0.5: 0.6}, {})[0][2])
+
+    def test_sweep_bins_pool_both_signs_of_a_perturbation(self):
+        from tritri_report import data
+        t1 = data.Totals()
+        t1.cases, t1.fp = 10, 1
+        t2 = data.Totals()
+        t2.cases, t2.fn = 10, 2
+        (x, label, tot), = analysis.sweep_bins("perturb", [("+1e-8", t1), ("-1e-8", t2)])
+        self.assertEqual((x, label, tot.cases, tot.fp, tot.fn), (1e-8, "1e-8", 20, 1, 2))
+
+
+class Stages(unittest.TestCase):
+    def test_stage_benchmarks_are_read_by_name(self):
+        from tritri_report import data
+        bench = {"tritri": {"results": [
+            {"algorithm": "yuhe13", "level": "stage:transform", "workload": "ratio:0.50", "ns_per_pair_median": 2.0},
+            {"algorithm": "yuhe13", "level": "stage:both", "workload": "ratio:0.50", "ns_per_pair_median": 8.0},
+            {"algorithm": "yuhe13", "level": "relation", "workload": "ratio:0.50", "ns_per_pair_median": 9.0}]}}
+        self.assertEqual(dict(data.stage_results(bench)["yuhe13"]), {"transform": 2.0, "both": 8.0})
+        self.assertEqual(data.primary_levels(bench), {"yuhe13": "relation"})
+
+
+class Derive(unittest.TestCase):
+    def test_groups_of_a_case(self):
+        labels = [("family", "near-coplanar"), ("tilt", "2^-20"), ("variant", "scale"), ("transform", "2^-7")]
+        self.assertEqual(derive.sweep_groups("near-coplanar.through.0.scale-2^-7", labels),
+                         [("scale", "-7"), ("tilt", "-20")])
+        labels = [("family", "shared-edge"), ("variant", "perturb"), ("transform", "+1e-8")]
+        self.assertEqual(derive.sweep_groups("x", labels), [("perturb", "+1e-8")])
+        labels = [("family", "shared-edge"), ("variant", "symmetry"), ("transform", "sym-012-012-ab")]
+        self.assertEqual(derive.sweep_groups("x", labels), [("exact", "identity")])
+
+    def test_derived_files_regroup_every_symmetric_variant(self):
+        corpus = tempfile.mkdtemp()
+        out = tempfile.mkdtemp()
+        try:
+            coords = " ".join(["0"] * 18)
+            with open(os.path.join(corpus, "shared-edge.cases"), "w") as f:
+                for t in ("sym-012-012-ab", "sym-021-012-ba"):
+                    f.write("shared-edge.hinge.0.%s %s family=shared-edge variant=symmetry transform=%s\n"
+                            % (t, coords, t))
+                f.write("shared-edge.hinge.0.scale-2^3 %s family=shared-edge variant=scale transform=2^3\n"
+                        % coords)
+            derive.write_derived(corpus, corpus, out)
+            with open(os.path.join(out, "symmetry.cases")) as f:
+                sym = [derive.parse_case_line(x) for x in f]
+            sym = [x for x in sym if x]
+            self.assertEqual(len(sym), 2)
+            self.assertTrue(all(dict(x[2])["family"] == "sym:shared-edge.hinge.0" for x in sym))
+            with open(os.path.join(out, "sweeps.cases")) as f:
+                names = [derive.parse_case_line(x)[0] for x in f if derive.parse_case_line(x)]
+            self.assertEqual(names, ["exact~shared-edge.hinge.0.sym-012-012-ab", "scale~shared-edge.hinge.0.scale-2^3"])
+        finally:
+            shutil.rmtree(corpus)
+            shutil.rmtree(out)
+
+
+if __name__ == "__main__":
+    unittest.main()
