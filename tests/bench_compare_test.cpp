@@ -56,10 +56,17 @@ TEST(BenchPlugins, ABrokenPluginIsReportedAndNotTimedAndTheOthersAre) {
   EXPECT_EQ(doc["tritri"]["not_timed"][0]["faults"].size(), 2u);
 }
 
-TEST(BenchPlugins, ProcessPluginsAreNotTimed) {
-  const Outcome r = run_tritri("bench --quick --exec 'python3 x.py'");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.out.find("cannot be timed"), std::string::npos) << r.out;
+TEST(BenchPlugins, AProcessPluginIsCheckedOnEveryPoolButNotTimed) {
+  const auto json = out_file("process.json");
+  const Outcome r = run_tritri("bench --quick --exec 'python3 " + std::string(TRITRI_SOURCE_DIR) +
+                               "/examples/plugins/mine.py' --exec-name mine-py --algo mine-py,guigue03 --workload ratio:0.5 "
+                               "--pool 512 --json " + json);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("not timed: mine-py/overlap/ratio:0.50: a process plug-in"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0 wrong, 0 unsupported of 512 pairs"), std::string::npos) << r.out;
+  const auto doc = read_json(json);
+  EXPECT_FALSE(has_benchmark(doc, "mine-py/overlap/ratio:0.50"));
+  EXPECT_TRUE(has_benchmark(doc, "guigue03/overlap/ratio:0.50"));
 }
 
 // The same plug-in name in two builds, one doing each pair's work twice: compare must call that

@@ -8,7 +8,7 @@ void register_null(Registry& registry) {
   Algorithm a;
   a.name = "null";
   a.citation = "none: the timing floor of tritri (reads every coordinate, returns a bit derived from them)";
-  a.summary = "NOT a test: answers sign(sum of the 18 coordinates); its check results are meaningless";
+  a.summary = "NOT a test: answers a bit of the XOR of the 18 coordinates' bit patterns; its check results are meaningless";
   a.boundary = Boundary::closed;
   a.accepts_degenerate = true;  // it reads coordinates and nothing else: any input is as good
   a.overlap = overlap_batch<&null_floor::overlap<double>>;

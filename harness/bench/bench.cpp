@@ -1,5 +1,7 @@
 #include "bench/bench.hpp"
 
+#include "process_plugin.hpp"
+
 #include "corpus.hpp"
 #include "io.hpp"
 
@@ -103,6 +105,7 @@ struct Entry {
   bool floor = false;
   Score score;
   std::vector<Fault> faults;    // pairs it crashed or hung on when checked: then it is not timed
+  std::string not_timed;        // why it is checked but not timed, when it is not for a fault
   std::optional<OpCounts> ops;  // totals over the pool
   std::vector<double> ns_per_pair;  // one per repetition (CPU time)
 
@@ -468,10 +471,32 @@ int run(const Options& options, std::ostream& out) {
 
   // ---- the entries: checked and counted before anything is timed ----
   std::vector<std::unique_ptr<Entry>> entries;
-  std::vector<std::unique_ptr<Entry>> faulted;  // crashed or hung when checked: reported, not timed
+  std::vector<std::unique_ptr<Entry>> faulted;  // checked and reported, not timed
   for (const Pool& pool : pools) {
     const bool extra = stage_pool_extra && &pool == stage_pool;  // built for the stages only
     for (const Algorithm* a : algorithms) {
+      if (a->process) {
+        // A process plug-in answers over a pipe: its time would be the pipe's. It is checked on
+        // every pool like the others, and reported, not timed.
+        if (extra) continue;
+        std::vector<std::string> names(pool.size());
+        for (std::size_t i = 0; i < names.size(); ++i) names[i] = "pair-" + std::to_string(i);
+        const ProcessAnswers got = run_process_plugin({a->process->command, a->process->timeout_seconds}, names, pool.pairs);
+        for (Level level : levels) {
+          if (level == Level::segment || !a->answers(level)) continue;
+          auto e = std::make_unique<Entry>();
+          e->algo = a->name;
+          e->level = std::string(to_string(level));
+          e->algorithm = a;
+          e->answer_level = level;
+          e->pool = &pool;
+          e->score = level == Level::overlap ? score_overlap(pool, got.overlap) : score_relation(pool, got.relation);
+          e->faults = got.faults;
+          e->not_timed = "a process plug-in: its answers cross a pipe, so it is checked, not timed";
+          faulted.push_back(std::move(e));
+        }
+        continue;
+      }
       if (!extra) {
         for (Level level : levels) {
           if (!a->answers(level)) continue;
@@ -512,6 +537,13 @@ int run(const Options& options, std::ostream& out) {
   }
 
   for (const auto& e : faulted) {
+    if (!e->not_timed.empty()) {
+      out << "not timed: " << e->name() << ": " << e->not_timed << "; " << e->score.wrong << " wrong, "
+          << e->score.unsupported << " unsupported of " << e->pool->size() << " pairs";
+      if (!e->faults.empty()) out << ", " << e->faults.size() << " crash(es) or timeout(s)";
+      out << '\n';
+      if (e->faults.empty()) continue;
+    }
     std::size_t crashes = 0;
     for (const Fault& f : e->faults) crashes += f.fate == Fate::crash;
     const Fault& first = e->faults.front();
@@ -821,7 +853,8 @@ int run(const Options& options, std::ostream& out) {
           faults.push_back({{"pair", f.index}, {"fate", to_string(f.fate)}, {"detail", f.detail},
                             {"line", format_case(Case{e->pool->name() + "#" + std::to_string(f.index), e->pool->pairs[f.index], {}, "", 0})}});
         untimed.push_back({{"name", e->name()}, {"algorithm", e->algo}, {"level", e->level},
-                           {"workload", e->pool->name()}, {"faults", faults}});
+                           {"workload", e->pool->name()}, {"reason", e->not_timed.empty() ? "crashed or hung when checked" : e->not_timed},
+                           {"wrong", e->score.wrong}, {"unsupported", e->score.unsupported}, {"faults", faults}});
       }
       doc["tritri"] = {{"not_timed", untimed},
                        {"pools", pool_json},

@@ -58,15 +58,14 @@ int run_bench(int argc, char** argv) {
            "                     (default 2); an algorithm that crashes or hangs on a pool is\n"
            "                     reported with the pair, paste-ready, and not timed on that pool\n"
            "  --no-isolation     check in this process (a crash ends the run)\n\n"
-           "Process plug-ins (--exec) are checked for correctness only: use tritri check.\n\n"
+           "  --exec COMMAND     a process plug-in (harness/process_plugin.hpp): checked on every\n"
+           "                     pool and reported, never timed (its answers cross a pipe; on\n"
+           "                     the default pools that takes a while). --exec-name NAME names it.\n\n"
            "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments.\n";
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
 
-  if (!args.values("--exec").empty())
-    throw UsageError("process plug-ins (--exec) cannot be timed: each answer crosses a pipe. Check them with "
-                     "'tritri check --exec'; time a shared-library plug-in with --plugin");
   load_external_algorithms(args);
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
   options.isolation = isolation_options(args);
