@@ -27,7 +27,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/algorithms/api/tritri DESTINATION ${CMAK
         FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 install(FILES ${PROJECT_SOURCE_DIR}/harness/testing/tritri/testing.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tritri)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/harness/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tritri/harness
-        FILES_MATCHING PATTERN "*.hpp" PATTERN "cli" EXCLUDE PATTERN "bench" EXCLUDE PATTERN "testing" EXCLUDE)
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "cli" EXCLUDE PATTERN "bench" EXCLUDE PATTERN "testing" EXCLUDE
+        PATTERN "test_support" EXCLUDE)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cases/generator/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tritri/corpus
         FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_SOURCE_DIR}/cases/builtin.cases ${PROJECT_SOURCE_DIR}/cases/yuhe13.cases

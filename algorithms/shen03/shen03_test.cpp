@@ -5,6 +5,8 @@
 #include "oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
+#include "test_support/counting_pairs.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -104,28 +106,9 @@ TEST(Shen03, NearMissesWithinTheToleranceCountAsTouching) {
 // Random reals: general position, where no answer hangs on the last bit. Small integers and
 // the built-in cases: vertices on planes and edges, coplanar pairs, exact contacts, where one
 // may. Zero-area triangles are left out, as the harness leaves them out for this port.
-struct CountingPairs {
-  std::vector<TrianglePair> general, singular;
-};
+using test_support::CountingPairs;
 
-CountingPairs counting_pairs() {
-  std::mt19937 rng(30);
-  std::uniform_real_distribution<double> real(-1, 1);
-  std::uniform_int_distribution<int> grid(-2, 2);
-  CountingPairs out;
-  while (out.general.size() < 300 || out.singular.size() < 300) {
-    const bool on_grid = out.singular.size() < out.general.size();
-    TrianglePair p;
-    for (auto* t : {&p.t1, &p.t2})
-      for (int i = 0; i < 3; ++i)
-        (*t)[i] = on_grid ? Vec3<double>(grid(rng), grid(rng), grid(rng))
-                          : Vec3<double>(real(rng), real(rng), real(rng));
-    if (!has_degenerate_triangle(p)) (on_grid ? out.singular : out.general).push_back(p);
-  }
-  for (const Case& c : builtin_cases())
-    if (!has_degenerate_triangle(c.pair)) out.singular.push_back(c.pair);
-  return out;
-}
+CountingPairs counting_pairs() { return test_support::counting_pairs(30); }
 
 // Counted must answer exactly as double does, on singular pairs as on general ones: its
 // arithmetic, the order of Eigen's sums included (tritri/counting.hpp), is double's.
