@@ -151,41 +151,14 @@ TEST(Held97, CoplanarBranch) {
 
 // ---- the counting instantiation (tritri bench's operation counts) ----
 
-// Random reals: general position, where no answer hangs on the last bit. Small integers and
-// the built-in cases: vertices on planes and edges, coplanar pairs, exact contacts, where one
-// may. Zero-area triangles are left out, as the harness leaves them out for this port.
-using test_support::CountingPairs;
+// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
 
-CountingPairs counting_pairs() { return test_support::counting_pairs(97); }
-
-// Counted must answer exactly as double does, on singular pairs as on general ones: its
-// arithmetic, the order of Eigen's sums included (tritri/counting.hpp), is double's.
-
-// Endpoints within a few ulps, for the reason above.
-bool close(const Vec3<double>& a, const Vec3<double>& b) { return (a - b).norm() <= 1e-9 * (1 + a.norm()); }
-bool same_answer(const SegmentAnswer& a, const SegmentAnswer& b) {
-  return a.kind == b.kind && close(a.p, b.p) && close(a.q, b.q);
-}
 
 TEST(Held97Counted, GivesTheDoubleAnswers) {
-  const CountingPairs pairs = counting_pairs();
-  int singular_disagreements = 0;
-  auto check = [&](const TrianglePair& p, bool general) {
-    SCOPED_TRACE(format_case({"c", p, {}, "", 0}, NumberStyle::hex));
-    const PairT<Counted> c = cast<Counted>(p);
-    auto agree = [&](bool same, const char* what) {
-      if (general) EXPECT_TRUE(same) << what;
-      singular_disagreements += !general && !same;
-    };
-    agree((overlap<double, true>(p)) == (overlap<Counted, true>(c)), "overlap<T, true>");
-    agree((overlap<double, false>(p)) == (overlap<Counted, false>(c)), "overlap<T, false>");
-    agree(same_answer((segment<double, true>(p)), (segment<Counted, true>(c))), "segment<T, true>");
-    agree(same_answer((segment<double, false>(p)), (segment<Counted, false>(c))), "segment<T, false>");
-  };
-  for (const TrianglePair& p : pairs.general) check(p, true);
-  for (const TrianglePair& p : pairs.singular) check(p, false);
-  RecordProperty("singular_disagreements", singular_disagreements);
-  EXPECT_EQ(singular_disagreements, 0);
+  test_support::expect_counted_matches_double(97, [](const auto& p) {
+    using T = test_support::scalar_of<decltype(p)>;
+    return std::tuple{overlap<T, true>(p), overlap<T, false>(p), segment<T, true>(p), segment<T, false>(p)};
+  });
 }
 
 }  // namespace

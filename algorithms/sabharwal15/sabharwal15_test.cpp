@@ -143,44 +143,14 @@ TEST(Sabharwal15, FloatInstantiationRuns) {
 
 std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
 
-// Random reals: general position, where no answer hangs on the last bit. Small integers and
-// the built-in cases: vertices on planes and edges, coplanar pairs, exact contacts, where one
-// may. Zero-area triangles are left out, as the harness leaves them out for this port.
-using test_support::CountingPairs;
+// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
 
-CountingPairs counting_pairs() { return test_support::counting_pairs(15); }
-
-// Counted must answer exactly as double does, on singular pairs as on general ones: its
-// arithmetic, the order of Eigen's sums included (tritri/counting.hpp), is double's.
-
-// Endpoints within a few ulps, for the reason above.
-bool close(const Vec3<double>& a, const Vec3<double>& b) { return (a - b).norm() <= 1e-9 * (1 + a.norm()); }
-bool same_answer(const SegmentAnswer& a, const SegmentAnswer& b) {
-  return a.kind == b.kind && close(a.p, b.p) && close(a.q, b.q);
-}
-bool same_answer(const RelationAnswer& a, const RelationAnswer& b) {
-  return a.relation == b.relation && a.dimension == b.dimension;
-}
 
 TEST(Sabharwal15Counted, GivesTheDoubleAnswers) {
-  const CountingPairs pairs = counting_pairs();
-  int singular_disagreements = 0;
-  auto check = [&](const TrianglePair& p, bool general) {
-    SCOPED_TRACE(format_case({"c", p, {}, "", 0}, NumberStyle::hex));
-    const PairT<Counted> c = cast<Counted>(p);
-    auto agree = [&](bool same, const char* what) {
-      if (general) EXPECT_TRUE(same) << what;
-      singular_disagreements += !general && !same;
-    };
-    agree(same_answer((published_relation<double>(p)), (published_relation<Counted>(c))), "published_relation<T>");
-    agree(same_answer((published_segment<double>(p)), (published_segment<Counted>(c))), "published_segment<T>");
-    agree(same_answer((plane_relation<double>(p)), (plane_relation<Counted>(c))), "plane_relation<T>");
-    agree(same_answer((plane_segment<double>(p)), (plane_segment<Counted>(c))), "plane_segment<T>");
-  };
-  for (const TrianglePair& p : pairs.general) check(p, true);
-  for (const TrianglePair& p : pairs.singular) check(p, false);
-  RecordProperty("singular_disagreements", singular_disagreements);
-  EXPECT_EQ(singular_disagreements, 0);
+  test_support::expect_counted_matches_double(15, [](const auto& p) {
+    using T = test_support::scalar_of<decltype(p)>;
+    return std::tuple{published_relation<T>(p), published_segment<T>(p), plane_relation<T>(p), plane_segment<T>(p)};
+  });
 }
 
 }  // namespace

@@ -103,31 +103,12 @@ TEST(Shen03, NearMissesWithinTheToleranceCountAsTouching) {
 
 // ---- the counting instantiation (tritri bench's operation counts) ----
 
-// Random reals: general position, where no answer hangs on the last bit. Small integers and
-// the built-in cases: vertices on planes and edges, coplanar pairs, exact contacts, where one
-// may. Zero-area triangles are left out, as the harness leaves them out for this port.
-using test_support::CountingPairs;
-
-CountingPairs counting_pairs() { return test_support::counting_pairs(30); }
-
-// Counted must answer exactly as double does, on singular pairs as on general ones: its
-// arithmetic, the order of Eigen's sums included (tritri/counting.hpp), is double's.
+// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
 TEST(Shen03Counted, GivesTheDoubleAnswers) {
-  const CountingPairs pairs = counting_pairs();
-  int singular_disagreements = 0;
-  auto check = [&](const TrianglePair& p, bool general) {
-    SCOPED_TRACE(format_case({"c", p, {}, "", 0}, NumberStyle::hex));
-    const PairT<Counted> c = cast<Counted>(p);
-    auto agree = [&](bool same, const char* what) {
-      if (general) EXPECT_TRUE(same) << what;
-      singular_disagreements += !general && !same;
-    };
-    agree((overlap<double>(p)) == (overlap<Counted>(c)), "overlap<T>");
-  };
-  for (const TrianglePair& p : pairs.general) check(p, true);
-  for (const TrianglePair& p : pairs.singular) check(p, false);
-  RecordProperty("singular_disagreements", singular_disagreements);
-  EXPECT_EQ(singular_disagreements, 0);
+  test_support::expect_counted_matches_double(30, [](const auto& p) {
+    using T = test_support::scalar_of<decltype(p)>;
+    return std::tuple{overlap<T>(p)};
+  });
 }
 
 }  // namespace

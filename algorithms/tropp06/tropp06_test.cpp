@@ -179,27 +179,13 @@ using test_support::CountingPairs;
 
 CountingPairs counting_pairs() { return test_support::counting_pairs(6); }
 
-// Counted must answer exactly as double does, on singular pairs as on general ones: its
-// arithmetic, the order of Eigen's sums included (tritri/counting.hpp), is double's.
+// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
 TEST(Tropp06Counted, GivesTheDoubleAnswers) {
-  const CountingPairs pairs = counting_pairs();
-  int singular_disagreements = 0;
-  auto check = [&](const TrianglePair& p, bool general) {
-    SCOPED_TRACE(format_case({"c", p, {}, "", 0}, NumberStyle::hex));
-    const PairT<Counted> c = cast<Counted>(p);
-    auto agree = [&](bool same, const char* what) {
-      if (general) EXPECT_TRUE(same) << what;
-      singular_disagreements += !general && !same;
-    };
+  test_support::expect_counted_matches_double(6, [](const auto& p) {
+    using T = test_support::scalar_of<decltype(p)>;
     // the edge-pair code, not only the boolean: the counted run must take the same path
-    agree(intersect<double>(p) == intersect<Counted>(c), "published");
-    agree((intersect<double, Projection::dominant, true>(p)) == (intersect<Counted, Projection::dominant, true>(c)),
-          "fixed");
-  };
-  for (const TrianglePair& p : pairs.general) check(p, true);
-  for (const TrianglePair& p : pairs.singular) check(p, false);
-  RecordProperty("singular_disagreements", singular_disagreements);
-  EXPECT_EQ(singular_disagreements, 0);
+    return std::tuple{intersect<T>(p), intersect<T, Projection::dominant, true>(p)};
+  });
 }
 
 OpCounts counts_of(const TrianglePair& p) {
