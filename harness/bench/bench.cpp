@@ -308,33 +308,26 @@ Score score_segment(const Pool& pool, const std::vector<SegmentAnswer>& answers)
   return s;
 }
 
+// Runs one counting batch over the pool from zeroed counts; false when the level has none.
+template <class Answer, class Batch>
+bool run_counted(Batch batch, const Pool& pool, OpCounts& counts) {
+  if (!batch) return false;
+  std::vector<Answer> out(pool.size());
+  counts = {};
+  batch(pool.pairs.data(), pool.size(), out.data());
+  return true;
+}
+
 std::optional<OpCounts> count_operations(const Algorithm& a, Level level, const Pool& pool) {
-  const std::size_t n = pool.size();
   OpCounts& counts = op_counts();
   const OpCounts before = counts;
+  bool ran = false;
   switch (level) {
-    case Level::overlap: {
-      if (!a.overlap_counted) return std::nullopt;
-      std::vector<Overlap> out(n);
-      counts = {};
-      a.overlap_counted(pool.pairs.data(), n, out.data());
-      break;
-    }
-    case Level::relation: {
-      if (!a.relation_counted) return std::nullopt;
-      std::vector<RelationAnswer> out(n);
-      counts = {};
-      a.relation_counted(pool.pairs.data(), n, out.data());
-      break;
-    }
-    case Level::segment: {
-      if (!a.segment_counted) return std::nullopt;
-      std::vector<SegmentAnswer> out(n);
-      counts = {};
-      a.segment_counted(pool.pairs.data(), n, out.data());
-      break;
-    }
+    case Level::overlap: ran = run_counted<Overlap>(a.overlap_counted, pool, counts); break;
+    case Level::relation: ran = run_counted<RelationAnswer>(a.relation_counted, pool, counts); break;
+    case Level::segment: ran = run_counted<SegmentAnswer>(a.segment_counted, pool, counts); break;
   }
+  if (!ran) return std::nullopt;
   const OpCounts total = counts;
   counts = before;
   return total;
