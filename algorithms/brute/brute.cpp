@@ -1,4 +1,4 @@
-#include "brute.hpp"
+#include "algorithms/brute/brute.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

@@ -24,7 +24,7 @@
 // - Degenerate (zero-area) triangles: not handled.
 #pragma once
 
-#include "moller97.hpp"  // Möller's coplanar test
+#include "algorithms/moller97/moller97.hpp"  // Möller's coplanar test
 
 #include "tritri/answers.hpp"
 

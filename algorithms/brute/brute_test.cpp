@@ -1,12 +1,12 @@
 // The brute-force baseline: its segment-vs-triangle test, its answers in general position, how it
 // handles edges in the other plane, and its coplanar branch.
-#include "brute.hpp"
+#include "algorithms/brute/brute.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "cgal_peer.hpp"
+#include "algorithms/cgal/cgal_peer.hpp"
 
 #include "tritri/algorithm.hpp"
 

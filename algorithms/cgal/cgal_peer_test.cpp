@@ -1,9 +1,9 @@
 // CGAL's filtered do_intersect is exact: it agrees with the oracle on contact as well as on
 // general position.
-#include "cgal_peer.hpp"
+#include "algorithms/cgal/cgal_peer.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 
 #include <gtest/gtest.h>
 

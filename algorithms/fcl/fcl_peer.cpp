@@ -1,5 +1,5 @@
 // FCL's headers are included here only, so nothing else compiles against them.
-#include "fcl_peer.hpp"
+#include "algorithms/fcl/fcl_peer.hpp"
 
 #include "tritri/algorithm.hpp"
 

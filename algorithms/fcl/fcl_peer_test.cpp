@@ -1,7 +1,7 @@
 // FCL's test on the relations in general position, and its documented behaviour on contact.
-#include "fcl_peer.hpp"
+#include "algorithms/fcl/fcl_peer.hpp"
 
-#include "oracle/oracle.hpp"
+#include "cases/oracle/oracle.hpp"
 
 #include <gtest/gtest.h>
 

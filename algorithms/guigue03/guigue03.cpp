@@ -1,4 +1,4 @@
-#include "guigue03.hpp"
+#include "algorithms/guigue03/guigue03.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

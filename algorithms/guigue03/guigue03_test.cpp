@@ -1,13 +1,13 @@
 // Guigue–Devillers 2003: the lone-vertex table, the 2-D region test, and the two tests against the
 // oracle. Sign-only code on small integers is exact in double, so there the port must agree with
 // the oracle on every pair, singular or not.
-#include "guigue03.hpp"
+#include "algorithms/guigue03/guigue03.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

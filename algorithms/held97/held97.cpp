@@ -1,4 +1,4 @@
-#include "held97.hpp"
+#include "algorithms/held97/held97.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

@@ -1,12 +1,12 @@
 // Held 1997 (ERIT, reconstructed): its pieces, its answers in general position, its segment, and
 // what its length tolerance does.
-#include "held97.hpp"
+#include "algorithms/held97/held97.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "moller97.hpp"
+#include "algorithms/moller97/moller97.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

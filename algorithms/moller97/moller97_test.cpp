@@ -1,8 +1,8 @@
 // Möller 1997: its pieces, its answers in general position, and the behaviour of its snap.
-#include "moller97.hpp"
+#include "algorithms/moller97/moller97.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
 #include <gtest/gtest.h>

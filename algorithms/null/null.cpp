@@ -1,4 +1,4 @@
-#include "null.hpp"
+#include "algorithms/null/null.hpp"
 
 #include "tritri/algorithm.hpp"
 

@@ -1,6 +1,6 @@
 // The floor's only promises: it reads every coordinate (each one can flip the answer), and it
 // is deterministic.
-#include "null.hpp"
+#include "algorithms/null/null.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "sabharwal15.hpp"
+#include "algorithms/sabharwal15/sabharwal15.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

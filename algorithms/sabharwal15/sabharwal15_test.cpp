@@ -1,12 +1,12 @@
 // Sabharwal–Leopold 2015: the pieces of §3, the defect of the published system, and the
 // corrected variant against the oracle.
-#include "sabharwal15.hpp"
+#include "algorithms/sabharwal15/sabharwal15.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

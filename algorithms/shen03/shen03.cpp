@@ -1,4 +1,4 @@
-#include "shen03.hpp"
+#include "algorithms/shen03/shen03.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

@@ -26,7 +26,7 @@
 // - Degenerate (zero-area) triangles: not handled (the unit normal divides by zero).
 #pragma once
 
-#include "guigue03.hpp"
+#include "algorithms/guigue03/guigue03.hpp"
 
 #include "tritri/answers.hpp"
 

@@ -1,11 +1,11 @@
 // Shen–Heng–Tang 2003: its signed distances, its tolerance, and its answers in general position.
-#include "shen03.hpp"
+#include "algorithms/shen03/shen03.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

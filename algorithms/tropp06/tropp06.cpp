@@ -1,4 +1,4 @@
-#include "tropp06.hpp"
+#include "algorithms/tropp06/tropp06.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

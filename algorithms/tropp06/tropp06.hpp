@@ -47,7 +47,7 @@
 // - Degenerate (zero-area) triangles: not handled.
 #pragma once
 
-#include "moller97.hpp"  // Möller's coplanar test, as the authors' code uses it
+#include "algorithms/moller97/moller97.hpp"  // Möller's coplanar test, as the authors' code uses it
 
 #include "tritri/answers.hpp"
 

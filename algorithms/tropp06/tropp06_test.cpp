@@ -1,12 +1,12 @@
 // Tropp–Tal–Shimshoni 2006: the scaled cut segment, the 2-D step and its edge-pair codes, the
 // answers in general position, and the two defects of the published routine.
-#include "tropp06.hpp"
+#include "algorithms/tropp06/tropp06.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

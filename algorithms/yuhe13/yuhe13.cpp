@@ -1,4 +1,4 @@
-#include "yuhe13.hpp"
+#include "algorithms/yuhe13/yuhe13.hpp"
 
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"

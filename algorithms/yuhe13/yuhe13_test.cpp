@@ -1,12 +1,12 @@
 // Yu–He 2013: the frame, the V-view crossings and their duplicate rule, the x-reject, the
 // Cyrus–Beck clip with its singular cases, the nine codes, and agreement with the oracle.
-#include "yuhe13.hpp"
+#include "algorithms/yuhe13/yuhe13.hpp"
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
 #include "tritri/counting.hpp"
 
-#include "test_support/counting_pairs.hpp"
+#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // exact, and the singularities built from them are exact too.
 #pragma once
 
-#include "construction.hpp"
+#include "cases/generator/construction.hpp"
 
 namespace tritri::corpus {
 

@@ -2,7 +2,7 @@
 // easy to state, plus the kind of exact frame it may be moved into.
 #pragma once
 
-#include "random.hpp"
+#include "cases/util/random.hpp"
 #include "tritri/answers.hpp"
 
 #include <optional>

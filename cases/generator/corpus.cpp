@@ -1,6 +1,8 @@
-#include "corpus.hpp"
+#include "cases/generator/corpus.hpp"
 
-#include "io.hpp"
+#include "cases/util/parallel.hpp"
+
+#include "cases/util/atomic_file.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -112,26 +114,9 @@ std::vector<Case> generate_corpus(const CorpusOptions& options) {
 
   // Each unit has its own random stream, so the threads may take them in any order.
   std::vector<std::vector<Case>> results(units.size());
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_lock;
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < units.size();) {
-      try {
-        results[i] = generate_unit(*units[i].first, units[i].second, options);
-      } catch (...) {
-        std::lock_guard lock(failure_lock);
-        if (!failure) failure = std::current_exception();
-        next = units.size();
-      }
-    }
-  };
-  std::vector<std::thread> threads;
-  const unsigned workers = std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned i = 1; i < workers; ++i) threads.emplace_back(work);
-  work();
-  for (auto& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
+  parallel_chunks(units.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) results[i] = generate_unit(*units[i].first, units[i].second, options);
+  }, {.chunk = 1});
 
   std::vector<Case> all;
   all.reserve(planned_size(options));

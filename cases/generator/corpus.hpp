@@ -4,10 +4,10 @@
 // whatever the number of threads.
 #pragma once
 
-#include "casefile.hpp"
-#include "construction.hpp"
-#include "oracle/oracle.hpp"
-#include "variants.hpp"
+#include "cases/casefile.hpp"
+#include "cases/generator/construction.hpp"
+#include "cases/oracle/oracle.hpp"
+#include "cases/generator/variants.hpp"
 
 #include <cstdint>
 #include <iosfwd>

@@ -1,7 +1,7 @@
 // Throughput of the corpus: generation alone, labelling alone, and both for the whole default
 // corpus (the issue asks for under a minute on two cores). Items are cases.
-#include "check.hpp"
-#include "corpus.hpp"
+#include "cases/label.hpp"
+#include "cases/generator/corpus.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 // The corpus is right when the oracle agrees with every construction, when symmetry cannot
 // change a label, when it is reproducible, and when every family produces what it promises.
-#include "check.hpp"
-#include "corpus.hpp"
+#include "cases/label.hpp"
+#include "cases/generator/corpus.hpp"
 
 #include <gtest/gtest.h>
 

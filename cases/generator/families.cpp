@@ -1,5 +1,5 @@
-#include "construction.hpp"
-#include "families_parts.hpp"
+#include "cases/generator/construction.hpp"
+#include "cases/generator/families_parts.hpp"
 
 #include <algorithm>
 #include <cmath>

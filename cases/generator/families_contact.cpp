@@ -4,8 +4,8 @@
 // vertex first, since perturbation moves T2's first vertex. A recurring device: a T2 whose
 // edge PQ has midpoint X on the plane z = 0 (P = X + e, Q = X - e, e.z != 0) cuts the plane
 // along a segment starting at X, so the segment's other end is irrelevant when X is inside T1.
-#include "canonical.hpp"
-#include "families_parts.hpp"
+#include "cases/generator/canonical.hpp"
+#include "cases/generator/families_parts.hpp"
 
 namespace tritri::corpus {
 namespace {

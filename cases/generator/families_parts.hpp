@@ -1,7 +1,7 @@
 // The family tables, split by theme; families.cpp puts them in the order.
 #pragma once
 
-#include "construction.hpp"
+#include "cases/generator/construction.hpp"
 
 namespace tritri::corpus {
 

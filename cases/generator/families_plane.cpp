@@ -1,6 +1,6 @@
 // Families 8-11: the triangles in one plane or in two parallel planes.
-#include "canonical.hpp"
-#include "families_parts.hpp"
+#include "cases/generator/canonical.hpp"
+#include "cases/generator/families_parts.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,7 +1,7 @@
 // Families 12-16: near-coplanar tilts, axis-aligned walls, slivers, tiny against huge, and
 // random pairs.
-#include "canonical.hpp"
-#include "families_parts.hpp"
+#include "cases/generator/canonical.hpp"
+#include "cases/generator/families_parts.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "variants.hpp"
+#include "cases/generator/variants.hpp"
 
 #include <algorithm>
 #include <array>

@@ -3,8 +3,8 @@
 // oracle alone knows the truth of the rounded input.
 #pragma once
 
-#include "casefile.hpp"
-#include "random.hpp"
+#include "cases/casefile.hpp"
+#include "cases/util/random.hpp"
 
 #include <vector>
 

@@ -1,9 +1,11 @@
-#include "bench/bench.hpp"
+#include "harness/bench/bench.hpp"
 
-#include "process_plugin.hpp"
+#include "cases/util/stats.hpp"
 
-#include "corpus.hpp"
-#include "io.hpp"
+#include "harness/run/process_plugin.hpp"
+
+#include "cases/generator/corpus.hpp"
+#include "cases/util/atomic_file.hpp"
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -113,19 +115,6 @@ struct Entry {
   std::string name() const { return row() + "/" + pool->name(); }
   const TrianglePair* input() const { return prepared.empty() ? pool->pairs.data() : prepared.data(); }
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t k = v.size() / 2;
-  return v.size() % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
-}
-
-double spread(const std::vector<double>& v) {  // max/min - 1
-  if (v.size() < 2) return NAN;
-  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-  return *hi / *lo - 1;
-}
 
 double spread_statistic(const std::vector<double>& v) {
   const double s = spread(v);

@@ -9,9 +9,9 @@
 // processed (one item = one pair) and from the `per_pair` counter.
 #pragma once
 
-#include "bench/pools.hpp"
-#include "casefile.hpp"
-#include "isolation.hpp"
+#include "harness/bench/pools.hpp"
+#include "cases/casefile.hpp"
+#include "harness/run/isolation.hpp"
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"
 

@@ -1,9 +1,9 @@
 // Tests of `tritri bench`: the pools are what they claim, the counting scalar counts, and the
 // command runs end to end and writes Google Benchmark's JSON with tritri's context keys.
 // No test here asserts anything about time: speed claims come from the benchmark only.
-#include "bench/bench.hpp"
-#include "bench/pools.hpp"
-#include "moller97.hpp"
+#include "harness/bench/bench.hpp"
+#include "harness/bench/pools.hpp"
+#include "algorithms/moller97/moller97.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -154,9 +154,9 @@ TEST(CountingScalar, MollerCountedAnswersAgreeWithDouble) {
 
 TEST(BenchScore, CountsWrongAndUnsupportedAnswers) {
   Pool p;
-  p.truth = {{true, Relation::cross, Dimension::segment, Stage::interval},
-             {false, Relation::disjoint, Dimension::none, Stage::plane2},
-             {true, Relation::touch_point, Dimension::point, Stage::interval}};
+  p.truth = {{true, false, Relation::cross, Dimension::segment, Stage::interval},
+             {false, false, Relation::disjoint, Dimension::none, Stage::plane2},
+             {true, false, Relation::touch_point, Dimension::point, Stage::interval}};
   const auto o = score_overlap(p, {Overlap::yes, Overlap::yes, Overlap::unsupported});
   EXPECT_EQ(o.wrong, 1u);
   EXPECT_EQ(o.unsupported, 1u);

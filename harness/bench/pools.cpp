@@ -1,4 +1,6 @@
-#include "bench/pools.hpp"
+#include "harness/bench/pools.hpp"
+
+#include "cases/util/random.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -17,48 +19,8 @@
 namespace tritri::bench {
 namespace {
 
-// ---- deterministic randomness (std::mt19937_64's sequence is fixed by the standard; the
-// distributions are not, so the conversions are written out here) ----
-
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t h = 0xcbf29ce484222325ull) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 0x100000001b3ull;
-  return h;
-}
-
-std::uint64_t splitmix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-
 // The seed of one named workload, derived from the run's seed.
-std::uint64_t sub_seed(std::uint64_t seed, const std::string& tag) {
-  return splitmix(seed ^ fnv1a(tag.data(), tag.size()));
-}
-
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : engine_(seed) {}
-  std::uint64_t bits() { return engine_(); }
-  double uniform() { return static_cast<double>(bits() >> 11) * 0x1p-53; }  // [0, 1)
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  // Integer in [lo, hi] (the modulo bias is below 2^-50 for these ranges).
-  std::int64_t integer(std::int64_t lo, std::int64_t hi) {
-    return lo + static_cast<std::int64_t>(bits() % static_cast<std::uint64_t>(hi - lo + 1));
-  }
-  bool coin() { return (bits() >> 63) != 0; }
-
- private:
-  std::mt19937_64 engine_;
-};
-
-template <class T>
-void shuffle(std::vector<T>& v, Rng& rng) {
-  for (std::size_t i = v.size(); i > 1; --i)
-    std::swap(v[i - 1], v[static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(i) - 1))]);
-}
+std::uint64_t sub_seed(std::uint64_t seed, const std::string& tag) { return splitmix(seed ^ fnv1a(tag)); }
 
 using V = Vec3<double>;
 
@@ -96,16 +58,16 @@ TrianglePair scramble(TrianglePair p, Rng& r) {
 
 // Two triangles anywhere in the unit cube: mostly rejected by a plane test.
 TrianglePair scatter_pair(Rng& r) {
-  const V c1(r.uniform(), r.uniform(), r.uniform()), c2(r.uniform(), r.uniform(), r.uniform());
+  const V c1(r.unit(), r.unit(), r.unit()), c2(r.unit(), r.unit(), r.unit());
   return {triangle_around(r, c1, mixed_size(r)), triangle_around(r, c2, mixed_size(r))};
 }
 
 // T2 centred on a point of T1: they meet about half the time, and the disjoint ones mostly
 // reach the interval stage.
 TrianglePair near_pair(Rng& r) {
-  const V c(r.uniform(), r.uniform(), r.uniform());
+  const V c(r.unit(), r.unit(), r.unit());
   const Triangle t1 = triangle_around(r, c, mixed_size(r));
-  double a = r.uniform(), b = r.uniform();
+  double a = r.unit(), b = r.unit();
   if (a + b > 1) a = 1 - a, b = 1 - b;
   const V at = t1[0] + a * (t1[1] - t1[0]) + b * (t1[2] - t1[0]);
   const double s = mixed_size(r);
@@ -232,7 +194,7 @@ TrianglePair segment_contact(Rng& r) {
 // ---- labelling and collecting ----
 
 std::uint64_t pair_hash(const TrianglePair& p) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
+  std::uint64_t h = kFnvOffset;
   for (const Triangle* t : {&p.t1, &p.t2})
     for (const auto& v : t->v) h = fnv1a(v.data(), 3 * sizeof(double), h);
   return h;
@@ -262,7 +224,7 @@ std::vector<Candidate> draw(std::size_t count, Rng& rng, const std::function<Tri
 
 Pool make_pool(std::string workload, std::string value, std::uint64_t seed, std::vector<Candidate> c) {
   Rng rng(seed);
-  shuffle(c, rng);
+  rng.shuffle(c);
   Pool p{std::move(workload), std::move(value), seed, {}, {}};
   p.pairs.reserve(c.size());
   p.truth.reserve(c.size());
@@ -275,7 +237,7 @@ Pool make_pool(std::string workload, std::string value, std::uint64_t seed, std:
 
 // The ratio workloads' candidate kinds and their shares.
 TrianglePair ratio_candidate(Rng& r, bool disjoint_full) {
-  const double u = r.uniform();
+  const double u = r.unit();
   if (!disjoint_full) {
     if (u < 0.55) return scatter_pair(r);
     if (u < 0.95) return near_pair(r);
@@ -287,10 +249,6 @@ TrianglePair ratio_candidate(Rng& r, bool disjoint_full) {
 }
 
 }  // namespace
-
-Truth truth_of(const OracleRecord& r) {
-  return {r.overlap, r.degenerate ? Relation::degenerate : r.relation, r.dimension, r.stage};
-}
 
 std::size_t Pool::intersecting() const {
   return static_cast<std::size_t>(std::count_if(truth.begin(), truth.end(), [](const Truth& t) { return t.overlap; }));
@@ -335,36 +293,6 @@ std::string type_text(Dimension d) {
   }
 }
 
-std::vector<Truth> label_pairs(const std::vector<TrianglePair>& pairs) {
-  std::vector<Truth> truth(pairs.size());
-  constexpr std::size_t kChunk = 512;
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex lock;
-  auto work = [&] {
-    for (;;) {
-      const std::size_t begin = next.fetch_add(kChunk);
-      if (begin >= pairs.size()) return;
-      const std::size_t end = std::min(pairs.size(), begin + kChunk);
-      try {
-        for (std::size_t i = begin; i < end; ++i) truth[i] = truth_of(oracle_label(pairs[i]));
-      } catch (...) {
-        std::lock_guard guard(lock);
-        if (!failure) failure = std::current_exception();
-        next = pairs.size();
-        return;
-      }
-    }
-  };
-  const unsigned workers = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> threads;
-  for (unsigned i = 1; i < workers && i * kChunk < pairs.size(); ++i) threads.emplace_back(work);
-  work();
-  for (auto& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
-  return truth;
-}
-
 std::vector<Pool> ratio_pools(const std::vector<double>& ratios, const PoolOptions& options) {
   const std::size_t n = options.size;
   std::size_t need_yes = 0, need_no = 0;
@@ -407,7 +335,7 @@ Pool type_pool(Dimension type, const PoolOptions& options) {
   std::function<TrianglePair(Rng&)> make;
   switch (type) {
     case Dimension::none:
-      make = [](Rng& r) { return r.uniform() < 0.55 ? scatter_pair(r) : r.uniform() < 0.9 ? near_pair(r) : coplanar_pair(r); };
+      make = [](Rng& r) { return r.unit() < 0.55 ? scatter_pair(r) : r.unit() < 0.9 ? near_pair(r) : coplanar_pair(r); };
       break;
     case Dimension::point: make = point_contact; break;
     case Dimension::segment: make = segment_contact; break;
@@ -460,10 +388,10 @@ std::vector<Pool> family_pools(const std::vector<Case>& cases, const PoolOptions
 }
 
 std::uint64_t hash_pools(const std::vector<const Pool*>& pools) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
+  std::uint64_t h = kFnvOffset;
   for (const Pool* p : pools) {
     const std::string name = p->name();
-    h = fnv1a(name.data(), name.size(), h);
+    h = fnv1a(name, h);
     for (const auto& pair : p->pairs)
       for (const Triangle* t : {&pair.t1, &pair.t2})
         for (const auto& v : t->v) h = fnv1a(v.data(), 3 * sizeof(double), h);

@@ -18,8 +18,8 @@
 //   family:F  one pool per family of a set of cases (case files, or the corpus generator).
 #pragma once
 
-#include "casefile.hpp"
-#include "oracle/oracle.hpp"
+#include "cases/casefile.hpp"
+#include "cases/label.hpp"
 
 #include <array>
 #include <cstdint>
@@ -30,17 +30,6 @@ namespace tritri::bench {
 
 inline constexpr std::size_t kDefaultPoolSize = 65536;
 inline constexpr std::uint64_t kDefaultSeed = 20240601;
-
-// What the oracle says about one pair, kept beside it (the full record is too large to keep for
-// millions of pairs).
-struct Truth {
-  bool overlap = false;
-  Relation relation = Relation::disjoint;
-  Dimension dimension = Dimension::none;
-  Stage stage = Stage::interval;
-};
-
-Truth truth_of(const OracleRecord& r);
 
 struct Pool {
   std::string workload;  // "ratio", "type", "family"
@@ -80,9 +69,6 @@ Pool type_pool(Dimension type, const PoolOptions& options);
 // zero-area triangles), shuffled once with the seed. A family smaller than options.size stays as
 // it is (it is never replayed to fill the pool); the caller warns about small pools.
 std::vector<Pool> family_pools(const std::vector<Case>& cases, const PoolOptions& options);
-
-// Labels pairs with the oracle on every core.
-std::vector<Truth> label_pairs(const std::vector<TrianglePair>& pairs);
 
 // 64-bit FNV-1a over the bytes of every pair of every pool, in order: the "corpus hash".
 std::uint64_t hash_pools(const std::vector<const Pool*>& pools);

@@ -1,4 +1,4 @@
-#include "args.hpp"
+#include "harness/cli/args.hpp"
 
 #include <cerrno>
 #include <cstdlib>

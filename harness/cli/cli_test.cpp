@@ -1,5 +1,5 @@
 // The tritri commands run as documented: their columns, their errors, their exit statuses.
-#include "tritri_runner.hpp"
+#include "harness/testing/tritri_runner.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "args.hpp"
-#include "bench/bench.hpp"
-#include "commands.hpp"
+#include "harness/cli/args.hpp"
+#include "harness/bench/bench.hpp"
+#include "harness/cli/commands.hpp"
 
 #include <iostream>
 

@@ -1,8 +1,9 @@
-#include "args.hpp"
-#include "check.hpp"
-#include "check_output.hpp"
-#include "commands.hpp"
-#include "io.hpp"
+#include "harness/cli/args.hpp"
+#include "cases/util/progress.hpp"
+#include "harness/check/check.hpp"
+#include "harness/check/check_output.hpp"
+#include "harness/cli/commands.hpp"
+#include "cases/util/atomic_file.hpp"
 
 #include <deque>
 #include <iostream>
@@ -128,7 +129,9 @@ int run_check(int argc, char** argv) {
     for (auto& row : read_baseline(file)) recorded.insert(row);
 
   const auto cases = load_cases(args.positional());
-  const auto oracle = label_cases(cases);
+  Progress progress("labelling", cases.size());
+  const auto oracle = label_cases(cases, progress.callback());
+  progress.finish();
   const CheckResult result = run_check(algorithms, cases, oracle, isolation_options(args));
 
   print_check_table(std::cout, result);

@@ -1,6 +1,6 @@
-#include "args.hpp"
-#include "commands.hpp"
-#include "compare.hpp"
+#include "harness/cli/args.hpp"
+#include "harness/cli/commands.hpp"
+#include "harness/check/compare.hpp"
 
 #include <cstdlib>
 #include <iostream>

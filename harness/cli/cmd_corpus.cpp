@@ -1,7 +1,8 @@
-#include "args.hpp"
-#include "check.hpp"
-#include "commands.hpp"
-#include "corpus.hpp"
+#include "harness/cli/args.hpp"
+#include "cases/util/progress.hpp"
+#include "harness/check/check.hpp"
+#include "harness/cli/commands.hpp"
+#include "cases/generator/corpus.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -92,7 +93,9 @@ int run_corpus(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Case> cases = corpus::generate_corpus(options);
   const double generated = seconds_since(start);
-  const auto records = label_cases(cases);
+  Progress progress("labelling", cases.size());
+  const auto records = label_cases(cases, progress.callback());
+  progress.finish();
   const double labelled = seconds_since(start) - generated;
   corpus::attach_oracle_labels(cases, records);
 

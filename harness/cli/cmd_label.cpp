@@ -1,6 +1,7 @@
-#include "args.hpp"
-#include "check.hpp"
-#include "commands.hpp"
+#include "harness/cli/args.hpp"
+#include "cases/util/progress.hpp"
+#include "harness/check/check.hpp"
+#include "harness/cli/commands.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -21,7 +22,9 @@ int run_label(int argc, char** argv) {
     return kOk;
   }
   const auto cases = load_cases(args.positional());
-  const auto records = label_cases(cases);
+  Progress progress("labelling", cases.size());
+  const auto records = label_cases(cases, progress.callback());
+  progress.finish();
   std::cout << "name\toverlap\trelation\tdim\tcoplanar\tseparation\tstage\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto& r = records[i];

@@ -1,6 +1,6 @@
-#include "args.hpp"
-#include "casefile.hpp"
-#include "commands.hpp"
+#include "harness/cli/args.hpp"
+#include "cases/casefile.hpp"
+#include "harness/cli/commands.hpp"
 
 #include <iomanip>
 #include <iostream>

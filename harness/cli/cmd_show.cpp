@@ -1,6 +1,6 @@
-#include "args.hpp"
-#include "check.hpp"
-#include "commands.hpp"
+#include "harness/cli/args.hpp"
+#include "harness/check/check.hpp"
+#include "harness/cli/commands.hpp"
 
 #include <cmath>
 #include <iomanip>

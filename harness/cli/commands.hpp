@@ -34,9 +34,9 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
 
 }  // namespace tritri::cli
 
-#include "args.hpp"
-#include "casefile.hpp"
-#include "isolation.hpp"
+#include "harness/cli/args.hpp"
+#include "cases/casefile.hpp"
+#include "harness/run/isolation.hpp"
 
 #include <set>
 

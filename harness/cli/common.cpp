@@ -1,8 +1,8 @@
-#include "args.hpp"
-#include "commands.hpp"
+#include "harness/cli/args.hpp"
+#include "harness/cli/commands.hpp"
 
-#include "plugin.hpp"
-#include "process_plugin.hpp"
+#include "harness/run/plugin.hpp"
+#include "harness/run/process_plugin.hpp"
 
 #include <cstdlib>
 #include <map>

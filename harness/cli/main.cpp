@@ -1,7 +1,7 @@
 // tritri: the reference test-suite and benchmark harness for 3-D triangle–triangle tests.
-#include "args.hpp"
-#include "casefile.hpp"
-#include "commands.hpp"
+#include "harness/cli/args.hpp"
+#include "cases/casefile.hpp"
+#include "harness/cli/commands.hpp"
 
 #include <cstring>
 #include <exception>

@@ -1,9 +1,9 @@
-#include "tritri/testing.hpp"
+#include "harness/testing/tritri/testing.hpp"
 
-#include "check.hpp"
-#include "check_output.hpp"
-#include "corpus.hpp"
-#include "io.hpp"
+#include "harness/check/check.hpp"
+#include "harness/check/check_output.hpp"
+#include "cases/generator/corpus.hpp"
+#include "cases/util/atomic_file.hpp"
 
 #include <array>
 #include <cstdlib>

@@ -1,0 +1,35 @@
+// The one tokenizer of tritri: case files, the process-plug-in protocol and baseline files.
+#pragma once
+
+#include <cctype>
+#include <string_view>
+#include <vector>
+
+namespace tritri {
+
+// Fields of `text` split at `separator`, empty fields kept: "a\t\tb" is {"a", "", "b"}.
+inline std::vector<std::string_view> split_fields(std::string_view text, char separator) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t at = text.find(separator, start);
+    fields.push_back(text.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start));
+    if (at == std::string_view::npos) return fields;
+    start = at + 1;
+  }
+}
+
+// Words of `text` separated by runs of white space; none empty.
+inline std::vector<std::string_view> split_words(std::string_view text) {
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i > start) words.push_back(text.substr(start, i - start));
+  }
+  return words;
+}
+
+}  // namespace tritri

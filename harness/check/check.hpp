@@ -1,0 +1,94 @@
+// `tritri check`: every chosen algorithm against the oracle, tallied per algorithm × family.
+#pragma once
+
+#include "cases/casefile.hpp"
+#include "cases/label.hpp"
+#include "harness/run/isolation.hpp"
+#include "cases/oracle/oracle.hpp"
+#include "tritri/algorithm.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tritri {
+
+// One algorithm's answers to one case, at every level it serves.
+struct Answers {
+  bool declined = false;  // the harness did not call it: a degenerate case it does not accept
+  Fate fate = Fate::ok;   // crash or timeout: the algorithm died or hung on this case
+  std::string fault;      // what happened: "SIGSEGV", "no progress for 2 s", ...
+  Overlap overlap = Overlap::unsupported;
+  RelationAnswer relation;
+  SegmentAnswer segment;
+};
+
+// Runs one algorithm on every case through its batch entry points. Degenerate cases are passed
+// only to algorithms that accept them.
+// Built-in and shared-library algorithms run in a child process (isolation.hpp) unless
+// isolation is switched off: a crash or hang becomes that case's fate, and the rest is kept.
+std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases,
+                                  const IsolationOptions& isolation = {});
+
+// A disagreement with the oracle. `answer` and `expected` are the vocabulary's words.
+struct Failure {
+  std::string algorithm;
+  std::size_t case_index = 0;
+  Level level = Level::overlap;
+  std::string answer;
+  std::string expected;
+  std::string detail;  // for a crash or timeout: what happened
+};
+
+// The segment level against the exact intersection, for algorithms that answer it.
+struct SegmentTally {
+  std::size_t answered = 0;        // cases with a segment-level answer (not declined/unsupported)
+  std::size_t kind_mismatches = 0; // the answer's dimension (empty/point/segment/area) is not the oracle's
+  std::size_t not_computed = 0;    // answered `coplanar`: contact found, no intersection given
+  // Where both the answer and the exact intersection are a point or a segment: the Hausdorff
+  // distance between them divided by the pair's bounding-box diagonal.
+  std::vector<double> errors;
+
+  double median_error() const;  // NaN when nothing was measured
+  double max_error() const;
+};
+
+// (answered, oracle) -> cases. Words as in failures: relation names, or "dim:<dimension>" when
+// the algorithm states only the dimension (or the case is degenerate).
+using Confusion = std::map<std::pair<std::string, std::string>, std::size_t>;
+
+struct Tally {
+  std::size_t cases = 0;
+  std::size_t false_positives = 0;  // overlap 1 where the oracle says 0
+  std::size_t false_negatives = 0;  // overlap 0 where the oracle says 1
+  std::size_t misclassified = 0;    // relation (or dimension) differs from the oracle's
+  std::size_t unsupported = 0;      // declined by the algorithm or, for degenerate input, the harness
+  std::size_t crashes = 0;          // the algorithm crashed (signal, exception) on the case
+  std::size_t timeouts = 0;         // the algorithm made no progress within the time limit
+  Confusion confusion;              // relation level only; every scored case, diagonal included
+  SegmentTally segment;             // segment level only
+};
+
+// The Hausdorff distance between two point sets, each a point (a == b) or a segment [a, b].
+double hausdorff_distance(const Vec3<double>& a0, const Vec3<double>& a1, const Vec3<double>& b0,
+                          const Vec3<double>& b1);
+
+// The diagonal of the pair's axis-aligned bounding box: the scale segment errors are relative to.
+double pair_size(const TrianglePair& pair);
+
+struct CheckResult {
+  std::vector<const Algorithm*> algorithms;
+  std::vector<std::string> families;  // in order of first appearance
+  std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, family)
+  std::vector<Failure> failures;
+};
+
+// Scores one algorithm's answers against the oracle and adds them to `result`.
+void score(const Algorithm& algorithm, const std::vector<Case>& cases,
+           const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
+           CheckResult& result);
+
+CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
+                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation = {});
+
+}  // namespace tritri

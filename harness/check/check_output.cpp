@@ -1,0 +1,287 @@
+#include "harness/check/check_output.hpp"
+
+#include "cases/util/text.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace tritri {
+namespace {
+
+
+nlohmann::json algorithm_json(const Algorithm& a) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (Level l : {Level::overlap, Level::relation, Level::segment})
+    if (a.answers(l)) levels.push_back(std::string(to_string(l)));
+  nlohmann::json tolerance = nullptr;
+  if (!a.tolerance.none())
+    tolerance = {{"value", a.tolerance.value},
+                 {"quantity", a.tolerance.quantity},
+                 {"relative", a.tolerance.relative}};
+  return {{"name", a.name},
+          {"citation", a.citation},
+          {"summary", a.summary},
+          {"levels", levels},
+          {"boundary", a.boundary == Boundary::closed ? "closed" : "open"},
+          {"tolerance", tolerance},
+          {"accepts_degenerate", a.accepts_degenerate}};
+}
+
+nlohmann::json number_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
+
+std::string short_number(double x) {
+  if (std::isnan(x)) return "-";
+  std::ostringstream s;
+  s << std::setprecision(2) << x;
+  return s.str();
+}
+
+template <class Row>
+void for_each_tally(const CheckResult& result, Row row) {
+  for (const Algorithm* a : result.algorithms)
+    for (const auto& family : result.families) {
+      auto it = result.tallies.find({a->name, family});
+      if (it != result.tallies.end()) row(*a, family, it->second);
+    }
+}
+
+}  // namespace
+
+void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells) {
+  if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
+                   [](const Algorithm* a) { return a->relation != nullptr; }))
+    return;
+  std::size_t name_width = 9, family_width = 6;
+  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
+  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  out << "\nrelation confusion (answered->oracle cases; "
+      << (all_cells ? "every cell" : "wrong cells only, --confusion for all") << ")\n";
+  for_each_tally(result, [&](const Algorithm& a, const std::string& family, const Tally& t) {
+    if (!a.relation) return;
+    std::string cells;
+    for (const auto& [key, count] : t.confusion) {
+      if (!all_cells && key.first == key.second) continue;
+      if (!cells.empty()) cells += ", ";
+      cells += key.first + "->" + key.second + " " + std::to_string(count);
+    }
+    if (cells.empty()) return;
+    out << std::left << std::setw(static_cast<int>(name_width)) << a.name << "  "
+        << std::setw(static_cast<int>(family_width)) << family << "  " << cells << '\n';
+  });
+}
+
+void print_segment_errors(std::ostream& out, const CheckResult& result) {
+  if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
+                   [](const Algorithm* a) { return a->segment != nullptr; }))
+    return;
+  std::size_t name_width = 9, family_width = 6;
+  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
+  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  out << "\nsegment error (Hausdorff distance to the exact intersection / pair's bounding-box diagonal)\n";
+  auto row = [&](const std::string& algorithm, const std::string& family, const std::string& answered,
+                 const std::string& measured, const std::string& median, const std::string& max,
+                 const std::string& kind, const std::string& not_computed) {
+    out << std::left << std::setw(static_cast<int>(name_width)) << algorithm << "  "
+        << std::setw(static_cast<int>(family_width)) << family << std::right << std::setw(9) << answered
+        << std::setw(9) << measured << std::setw(10) << median << std::setw(10) << max << std::setw(15)
+        << kind << std::setw(14) << not_computed << '\n';
+  };
+  row("algorithm", "family", "answered", "measured", "median", "max", "kind-mismatch", "not-computed");
+  for (const Algorithm* a : result.algorithms) {
+    if (!a->segment) continue;
+    SegmentTally total;
+    for (const auto& family : result.families) {
+      auto it = result.tallies.find({a->name, family});
+      if (it == result.tallies.end()) continue;
+      const SegmentTally& s = it->second.segment;
+      total.answered += s.answered;
+      total.kind_mismatches += s.kind_mismatches;
+      total.not_computed += s.not_computed;
+      total.errors.insert(total.errors.end(), s.errors.begin(), s.errors.end());
+      row(a->name, family, std::to_string(s.answered), std::to_string(s.errors.size()),
+          short_number(s.median_error()), short_number(s.max_error()), std::to_string(s.kind_mismatches),
+          std::to_string(s.not_computed));
+    }
+    if (result.families.size() > 1)
+      row(a->name, "(all)", std::to_string(total.answered), std::to_string(total.errors.size()),
+          short_number(total.median_error()), short_number(total.max_error()),
+          std::to_string(total.kind_mismatches), std::to_string(total.not_computed));
+  }
+}
+
+void print_check_table(std::ostream& out, const CheckResult& result) {
+  std::size_t name_width = 9, family_width = 6;
+  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
+  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  auto row = [&](const std::string& algorithm, const std::string& family, const std::string& cases,
+                 const std::string& fp, const std::string& fn, const std::string& rel,
+                 const std::string& unsupported, const std::string& crash, const std::string& timeout) {
+    out << std::left << std::setw(static_cast<int>(name_width)) << algorithm << "  "
+        << std::setw(static_cast<int>(family_width)) << family << std::right << std::setw(8) << cases
+        << std::setw(7) << fp << std::setw(7) << fn << std::setw(10) << rel << std::setw(13)
+        << unsupported << std::setw(7) << crash << std::setw(9) << timeout << '\n';
+  };
+  row("algorithm", "family", "cases", "FP", "FN", "relation", "unsupported", "crash", "timeout");
+  for (const Algorithm* a : result.algorithms) {
+    Tally total;
+    for (const auto& family : result.families) {
+      auto it = result.tallies.find({a->name, family});
+      if (it == result.tallies.end()) continue;
+      const Tally& t = it->second;
+      total.cases += t.cases;
+      total.false_positives += t.false_positives;
+      total.false_negatives += t.false_negatives;
+      total.misclassified += t.misclassified;
+      total.unsupported += t.unsupported;
+      total.crashes += t.crashes;
+      total.timeouts += t.timeouts;
+      row(a->name, family, std::to_string(t.cases), std::to_string(t.false_positives),
+          std::to_string(t.false_negatives), a->answers(Level::relation) ? std::to_string(t.misclassified) : "-",
+          std::to_string(t.unsupported), std::to_string(t.crashes), std::to_string(t.timeouts));
+    }
+    if (result.families.size() > 1)
+      row(a->name, "(all)", std::to_string(total.cases), std::to_string(total.false_positives),
+          std::to_string(total.false_negatives), a->answers(Level::relation) ? std::to_string(total.misclassified) : "-",
+          std::to_string(total.unsupported), std::to_string(total.crashes), std::to_string(total.timeouts));
+  }
+}
+
+void print_failures(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
+                    std::size_t limit) {
+  std::size_t shown = 0;
+  for (const Failure& f : result.failures) {
+    if (shown == limit) {
+      out << "# ... " << (result.failures.size() - shown)
+          << " more disagreements (raise --max-failures, or see --json)\n";
+      break;
+    }
+    const Case& c = cases[f.case_index];
+    if (f.detail.empty())
+      out << "# " << f.algorithm << ' ' << to_string(f.level) << ": answered " << f.answer << ", oracle "
+          << f.expected << "   (" << c.source << ':' << c.line << ")\n";
+    else
+      out << "# " << f.algorithm << ": " << f.answer << " (" << f.detail << ") on this case   (" << c.source
+          << ':' << c.line << ")\n";
+    out << format_case(c, NumberStyle::g17) << '\n';
+    out << format_case(c, NumberStyle::hex) << '\n';
+    ++shown;
+  }
+}
+
+void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
+                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs) {
+  nlohmann::json doc;
+  doc["schema"] = "tritri-check/2";
+  doc["oracle"] = oracle_description();
+  doc["inputs"] = inputs;
+  doc["case_count"] = cases.size();
+  doc["algorithms"] = nlohmann::json::array();
+  for (const Algorithm* a : result.algorithms) doc["algorithms"].push_back(algorithm_json(*a));
+  doc["families"] = result.families;
+  doc["tallies"] = nlohmann::json::array();
+  for (const Algorithm* a : result.algorithms)
+    for (const auto& family : result.families) {
+      auto it = result.tallies.find({a->name, family});
+      if (it == result.tallies.end()) continue;
+      const Tally& t = it->second;
+      nlohmann::json confusion = nullptr;
+      if (a->answers(Level::relation)) {
+        confusion = nlohmann::json::array();
+        for (const auto& [key, count] : t.confusion)
+          confusion.push_back({{"answer", key.first}, {"oracle", key.second}, {"count", count}});
+      }
+      nlohmann::json segment = nullptr;
+      if (a->answers(Level::segment))
+        segment = {{"answered", t.segment.answered},
+                   {"measured", t.segment.errors.size()},
+                   {"median_error", number_or_null(t.segment.median_error())},
+                   {"max_error", number_or_null(t.segment.max_error())},
+                   {"kind_mismatches", t.segment.kind_mismatches},
+                   {"not_computed", t.segment.not_computed}};
+      doc["tallies"].push_back({{"algorithm", a->name},
+                                {"family", family},
+                                {"cases", t.cases},
+                                {"false_positives", t.false_positives},
+                                {"false_negatives", t.false_negatives},
+                                {"misclassified", a->answers(Level::relation) ? nlohmann::json(t.misclassified) : nullptr},
+                                {"unsupported", t.unsupported},
+                                {"crashes", t.crashes},
+                                {"timeouts", t.timeouts},
+                                {"confusion", confusion},
+                                {"segment", segment}});
+    }
+  doc["failures"] = nlohmann::json::array();
+  for (const Failure& f : result.failures) {
+    const Case& c = cases[f.case_index];
+    doc["failures"].push_back({{"algorithm", f.algorithm},
+                               {"case", c.name},
+                               {"family", c.family()},
+                               {"level", std::string(to_string(f.level))},
+                               {"answer", f.answer},
+                               {"oracle", f.expected},
+                               {"detail", f.detail},
+                               {"oracle_relation", std::string(to_string(oracle[f.case_index].relation))},
+                               {"line", format_case(c)}});
+  }
+  out << doc.dump(1) << '\n';
+}
+
+Baseline read_baseline(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open baseline for reading");
+  Baseline rows;
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty() || line[0] == '#') continue;
+    auto fields = split_fields(line, '\t');
+    if (fields.size() != 5)
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": expected 5 tab-separated fields "
+                               "(algorithm case level answer oracle), found " +
+                               std::to_string(fields.size()));
+    if (fields[0] == "algorithm" && fields[1] == "case") continue;  // header
+    rows.insert({std::string(fields[0]), std::string(fields[1]), std::string(fields[2]), std::string(fields[3]),
+                 std::string(fields[4])});
+  }
+  return rows;
+}
+
+Baseline baseline_of(const CheckResult& result, const std::vector<Case>& cases) {
+  Baseline rows;
+  for (const Failure& f : result.failures)
+    rows.insert({f.algorithm, cases[f.case_index].name, std::string(to_string(f.level)), f.answer,
+                 f.expected});
+  return rows;
+}
+
+void write_baseline(std::ostream& out, const Baseline& baseline) {
+  out << "# tritri baseline: disagreements with the oracle that are known and recorded.\n"
+         "# Written by `tritri check --write-baseline`; compared by `tritri check --baseline`.\n"
+         "algorithm\tcase\tlevel\tanswer\toracle\n";
+  for (const auto& [a, c, l, ans, exp] : baseline)
+    out << a << '\t' << c << '\t' << l << '\t' << ans << '\t' << exp << '\n';
+}
+
+BaselineComparison compare_with_baseline(const Baseline& recorded, const CheckResult& result,
+                                         const std::vector<Case>& cases) {
+  std::set<std::string> algorithms, case_names;
+  for (const Algorithm* a : result.algorithms) algorithms.insert(a->name);
+  for (const Case& c : cases) case_names.insert(c.name);
+  const Baseline current = baseline_of(result, cases);
+  BaselineComparison comparison;
+  for (const auto& row : current)
+    if (!recorded.count(row)) comparison.new_failures.push_back(row);
+  for (const auto& row : recorded)
+    if (algorithms.count(std::get<0>(row)) && case_names.count(std::get<1>(row)) && !current.count(row))
+      comparison.fixed.push_back(row);
+  return comparison;
+}
+
+}  // namespace tritri

@@ -1,0 +1,136 @@
+// compare: the U test gives the exact p-values one can work out by hand, a known injected
+// slowdown is significant, an unchanged rerun is not, and check results diff per family.
+#include "harness/check/compare.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace tritri {
+namespace {
+
+TEST(MannWhitney, ExactPValuesOfSeparatedSamples) {
+  // U = 0: only 1 of the C(6,3) = 20 interleavings is as extreme on each side
+  auto t = mann_whitney({1, 2, 3}, {4, 5, 6});
+  EXPECT_TRUE(t.exact);
+  EXPECT_EQ(t.u, 0);
+  EXPECT_DOUBLE_EQ(t.p_value, 2.0 / 20.0);
+  // nine against nine, fully separated: 2 / C(18,9)
+  std::vector<double> a, b;
+  for (int i = 0; i < 9; ++i) {
+    a.push_back(i);
+    b.push_back(100 + i);
+  }
+  t = mann_whitney(a, b);
+  EXPECT_NEAR(t.p_value, 2.0 / 48620.0, 1e-15);
+  EXPECT_DOUBLE_EQ(mann_whitney(b, a).p_value, t.p_value);  // two-sided: symmetric
+}
+
+TEST(MannWhitney, InterleavedSamplesAreNotSignificant) {
+  const auto t = mann_whitney({1, 3, 5, 7, 9, 11, 13, 15, 17}, {2, 4, 6, 8, 10, 12, 14, 16, 18});
+  EXPECT_GT(t.p_value, 0.5);
+  // U = 1 of 0..9 for 3 vs 3? {1,2,4} vs {3,5,6}: one pair (4 > 3): P(U <= 1) = 2/20
+  EXPECT_DOUBLE_EQ(mann_whitney({1, 2, 4}, {3, 5, 6}).p_value, 2 * 2.0 / 20.0);
+}
+
+TEST(MannWhitney, TiesUseTheNormalApproximation) {
+  const auto t = mann_whitney({1, 1, 2, 2, 3, 3, 4, 4}, {1, 2, 2, 3, 3, 4, 4, 5});
+  EXPECT_FALSE(t.exact);
+  EXPECT_GT(t.p_value, 0.2);
+  EXPECT_LE(t.p_value, 1.0);
+}
+
+// A Google Benchmark result with `reps` repetitions per benchmark, ns per item scaled by `factor`.
+std::string bench_file(const std::string& name, double factor, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(1.0, 0.01);
+  nlohmann::json doc;
+  doc["context"] = {{"date", "x"}};
+  doc["benchmarks"] = nlohmann::json::array();
+  for (const std::string bench : {"moller97/overlap/ratio:0.5", "guigue03/overlap/ratio:0.5"})
+    for (int r = 0; r < 9; ++r) {
+      const double ns = (bench[0] == 'm' ? 30.0 : 25.0) * factor * noise(rng);
+      doc["benchmarks"].push_back({{"name", bench}, {"run_name", bench}, {"run_type", "iteration"},
+                                   {"repetition_index", r}, {"real_time", ns * 65536}, {"time_unit", "ns"},
+                                   {"items_per_second", 1e9 / ns}});
+    }
+  doc["benchmarks"].push_back({{"name", "moller97/overlap/ratio:0.5_median"}, {"run_name", "moller97/overlap/ratio:0.5"},
+                               {"run_type", "aggregate"}, {"aggregate_name", "median"}, {"real_time", 1.0}});
+  const std::string path = std::string(TRITRI_BINARY_DIR) + "/" + name;
+  std::ofstream(path) << doc.dump();
+  return path;
+}
+
+TEST(CompareBenchmarks, AnInjectedSlowdownIsSignificantAndARerunIsNot) {
+  const auto base = bench_file("base.json", 1.0, 1);
+  const auto rerun = bench_file("rerun.json", 1.0, 2);
+  const auto slow = bench_file("slow.json", 1.2, 3);
+  for (const auto& c : compare_benchmarks(base, slow, {})) {
+    EXPECT_TRUE(c.significant) << c.name;
+    EXPECT_NEAR(c.ratio, 1.2, 0.03) << c.name;
+    EXPECT_EQ(c.repetitions_a, 9u);  // the aggregate row is not a repetition
+  }
+  for (const auto& c : compare_benchmarks(base, rerun, {})) {
+    EXPECT_FALSE(c.counts) << c.name << " p=" << c.test.p_value;
+    EXPECT_NEAR(c.ratio, 1.0, 0.03);
+  }
+  std::ostringstream out;
+  EXPECT_TRUE(print_comparison(out, base, slow, {}));
+  EXPECT_NE(out.str().find("slower (significant)"), std::string::npos) << out.str();
+  const std::string mean_label = "geometric mean of B/A over 2 benchmarks: ";
+  const auto at = out.str().find(mean_label);
+  ASSERT_NE(at, std::string::npos) << out.str();
+  EXPECT_NEAR(std::stod(out.str().substr(at + mean_label.size())), 1.2, 0.02);
+  std::ostringstream same;
+  EXPECT_FALSE(print_comparison(same, base, rerun, {}));
+}
+
+std::string check_file(const std::string& name, int false_negatives) {
+  nlohmann::json doc = {{"schema", "tritri-check/2"}};
+  doc["tallies"] = {{{"algorithm", "moller97"}, {"family", "shared-edge"}, {"cases", 10}, {"false_positives", 0},
+                     {"false_negatives", false_negatives}, {"misclassified", nullptr}, {"unsupported", 0}},
+                    {{"algorithm", "moller97"}, {"family", "random"}, {"cases", 10}, {"false_positives", 1},
+                     {"false_negatives", 0}, {"misclassified", nullptr}, {"unsupported", 0}}};
+  const std::string path = std::string(TRITRI_BINARY_DIR) + "/" + name;
+  std::ofstream(path) << doc.dump();
+  return path;
+}
+
+TEST(CompareBenchmarks, ASignificantButTinyDriftDoesNotCount) {
+  const auto base = bench_file("drift-base.json", 1.0, 4);
+  const auto drift = bench_file("drift.json", 1.008, 5);  // 0.8% slower, noise 1%: may test significant
+  std::ostringstream out;
+  EXPECT_FALSE(print_comparison(out, base, drift, {}));
+  for (const auto& c : compare_benchmarks(base, drift, {})) EXPECT_FALSE(c.counts) << c.name;
+  CompareOptions strict;
+  strict.min_change = 0;
+  const auto slow = bench_file("drift-slow.json", 1.2, 6);
+  for (const auto& c : compare_benchmarks(base, slow, strict)) EXPECT_TRUE(c.counts) << c.name;
+}
+
+TEST(CompareChecks, ReportsTheFamiliesWhoseErrorsChanged) {
+  const auto a = check_file("check-a.json", 0), b = check_file("check-b.json", 2);
+  std::ostringstream out;
+  EXPECT_TRUE(print_comparison(out, a, b, {}));
+  EXPECT_NE(out.str().find("moller97 / shared-edge:  FN 0 -> 2 (+2)"), std::string::npos) << out.str();
+  EXPECT_EQ(out.str().find("random"), std::string::npos) << out.str();
+  std::ostringstream back;
+  EXPECT_FALSE(print_comparison(back, b, a, {}));  // fewer errors is not worse
+}
+
+TEST(CompareChecks, RefusesFilesItCannotCompare) {
+  const auto a = check_file("refuse-check.json", 0);
+  const auto bench = bench_file("refuse-bench.json", 1.0, 1);
+  std::ostringstream out;
+  EXPECT_THROW(print_comparison(out, a, bench, {}), std::runtime_error);
+  const std::string junk = std::string(TRITRI_BINARY_DIR) + "/refuse-junk.json";
+  std::ofstream(junk) << "{not json";
+  EXPECT_THROW(print_comparison(out, junk, a, {}), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace tritri

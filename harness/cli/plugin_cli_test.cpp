@@ -1,0 +1,135 @@
+// Plug-ins through the real CLI: a broken one is contained case by case, the tutorial's
+// examples run, process plug-ins survive their own deaths.
+#include "harness/testing/tritri_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace tritri {
+namespace {
+
+using testing_support::Outcome;
+using testing_support::run_tritri;
+using testing_support::scratch_file;
+
+const std::string kSource = TRITRI_SOURCE_DIR;
+const std::string kBuiltin = kSource + "/cases/builtin.cases";
+std::string lib(const std::string& name) { return std::string(TRITRI_BINARY_DIR) + "/plugins/lib" + name + ".so"; }
+
+// A table row of `tritri check`: the words of the line that starts with algorithm and family.
+std::vector<std::string> row(const std::string& out, const std::string& algorithm, const std::string& family) {
+  std::size_t at = 0;
+  while ((at = out.find(algorithm, at)) != std::string::npos) {
+    const auto end = out.find('\n', at);
+    std::istringstream line(out.substr(at, end - at));
+    std::vector<std::string> words;
+    for (std::string w; line >> w;) words.push_back(w);
+    if (words.size() > 1 && words[0] == algorithm && words[1] == family) return words;
+    at = end;
+  }
+  return {};
+}
+
+const std::string kHostile =
+    "fine-1 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 2 2 1  family=f\n"
+    "segv 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 13 2 1  family=f\n"
+    "fine-2 0 0 0 4 0 0 0 4 0  5 5 5 6 5 5 5 6 5  family=f\n"
+    "hang 0 0 0 4 0 0 0 4 0  666 1 -1 1 1 1 2 2 1  family=f\n"
+    "abort 0 0 0 4 0 0 0 4 0  99 1 -1 1 1 1 2 2 1  family=f\n"
+    "fine-3 0 0 0 4 0 0 0 4 0  1 1 0 2 1 0 1 2 0  family=f\n";
+
+TEST(BrokenPlugin, CheckContainsItsCrashesAndHangsAndKeepsEverythingElse) {
+  const auto cases = scratch_file("hostile.cases", kHostile);
+  const Outcome r = run_tritri("check --plugin " + lib("tritri_broken") + " --algo broken,moller97 --timeout 0.5 " + cases);
+  ASSERT_EQ(r.status, 0) << r.out;
+  // columns: algorithm family cases FP FN relation unsupported crash timeout
+  const auto broken = row(r.out, "broken", "f");
+  ASSERT_EQ(broken.size(), 9u) << r.out;
+  EXPECT_EQ(broken[2], "6");
+  EXPECT_EQ(broken[7], "2");  // segv and abort
+  EXPECT_EQ(broken[8], "1");  // hang
+  const auto moller = row(r.out, "moller97", "f");
+  ASSERT_EQ(moller.size(), 9u) << r.out;
+  EXPECT_EQ(moller[7], "0");
+  EXPECT_EQ(moller[8], "0");
+  // each fault named with its case, paste-ready
+  EXPECT_NE(r.out.find("# broken: crash (SIGSEGV) on this case"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("# broken: crash (SIGABRT) on this case"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("# broken: timeout (no progress for 0.5 s) on this case"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nsegv 0x0p+0 "), std::string::npos) << r.out;
+}
+
+TEST(BrokenPlugin, AnswerAndShowSayWhatHappened) {
+  const auto cases = scratch_file("hostile.cases", kHostile);
+  Outcome r = run_tritri("answer --plugin " + lib("tritri_broken") + " --algo broken --timeout 0.5 " + cases);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("segv\tcrash\tcrash\tcrash\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hang\ttimeout\t"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fine-2\t0\t-\t-\n"), std::string::npos) << r.out;
+  r = run_tritri("show segv " + cases + " --plugin " + lib("tritri_broken") + " --algo broken,moller97");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("crash (SIGSEGV)"), std::string::npos) << r.out;
+}
+
+TEST(BrokenPlugin, ANewCrashFailsTheBaseline) {
+  const auto cases = scratch_file("hostile.cases", kHostile);
+  const auto baseline = scratch_file("empty-baseline.tsv", "algorithm\tcase\tlevel\tanswer\toracle\n");
+  const Outcome r = run_tritri("check --quiet --plugin " + lib("tritri_broken") + " --algo broken --timeout 0.5 --baseline " +
+                               baseline + " " + cases);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("broken\tsegv\toverlap\tanswered crash"), std::string::npos) << r.out;
+}
+
+TEST(ExamplePlugins, TheCExampleIsRightOnTheBuiltinCases) {
+  const Outcome r = run_tritri("check --plugin " + lib("tritri_example_mine") + " --algo mine " + kBuiltin);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto all = row(r.out, "mine", "(all)");
+  ASSERT_EQ(all.size(), 9u) << r.out;
+  EXPECT_EQ(all[2], "43");
+  EXPECT_EQ(all[3], "0");
+  EXPECT_EQ(all[4], "0");
+}
+
+TEST(ExamplePlugins, ThePythonExampleIsRightOnTheBuiltinCases) {
+  const Outcome r = run_tritri("check --exec 'python3 " + kSource + "/harness/examples/mine.py' --exec-name mine-py --algo mine-py " + kBuiltin);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto all = row(r.out, "mine-py", "(all)");
+  ASSERT_EQ(all.size(), 9u) << r.out;
+  EXPECT_EQ(all[2], "43");
+  EXPECT_EQ(all[3], "0");
+  EXPECT_EQ(all[4], "0");
+}
+
+TEST(ProcessPlugin, SurvivesItsOwnDeathsAndHangs) {
+  const auto cases = scratch_file("process.cases",
+      "ok-1 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 2 2 1  family=p\n"
+      "boom 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 2 2 1  family=p\n"
+      "ok-2 0 0 0 4 0 0 0 4 0  5 5 5 6 5 5 5 6 5  family=p\n"
+      "slow 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 2 2 1  family=p\n"
+      "ok-3 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 2 2 1  family=p\n");
+  const Outcome r = run_tritri("check --exec 'python3 " + kSource + "/harness/run/test_plugins/unreliable.py' --algo exec --timeout 1 " + cases);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto p = row(r.out, "exec", "p");
+  ASSERT_EQ(p.size(), 9u) << r.out;
+  EXPECT_EQ(p[3], "1");  // ok-2 is disjoint; it says 1 to everything
+  EXPECT_EQ(p[7], "1");  // boom
+  EXPECT_EQ(p[8], "1");  // slow
+  EXPECT_NE(r.out.find("# exec: crash (the process ended (exit status 3))"), std::string::npos) << r.out;
+}
+
+TEST(ProcessPlugin, AProtocolErrorStopsTheRunAndQuotesTheAnswer) {
+  const auto cases = scratch_file("garbled.cases", "garbled 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 1 2 2 1\n");
+  const Outcome r = run_tritri("check --exec 'python3 " + kSource + "/harness/run/test_plugins/unreliable.py' --algo exec " + cases);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("answered 'what is a triangle' to case 'garbled'"), std::string::npos) << r.out;
+}
+
+TEST(ProcessPlugin, ACommandThatCannotRunIsAClearError) {
+  const Outcome r = run_tritri("check --exec '/nonexistent/plugin' " + kBuiltin);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("did not answer a probe case"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace tritri
