@@ -18,9 +18,7 @@ void register_brute(Registry& registry) {
       "Moller's coplanar test when the planes are parallel";
   a.boundary = Boundary::closed;
   a.accepts_degenerate = false;  // tolerance: none, exact-zero determinant test
-  a.overlap = overlap_batch<&brute::overlap<double>>;
-  a.overlap_float = overlap_batch<&brute::overlap<float>>;
-  a.overlap_counted = overlap_batch<&brute::overlap<Counted>>;
+  add_level<Level::overlap>(a, []<class T>(const PairT<T>& p) { return brute::overlap<T>(p); });
   registry.add(std::move(a));
 }
 

@@ -32,7 +32,7 @@ void register_cgal(Registry& registry) {
   a.summary = "CGAL do_intersect on Epick: exact filtered predicates (closed, no tolerance)";
   a.boundary = Boundary::closed;
   a.accepts_degenerate = false;  // CGAL's precondition: non-degenerate triangles
-  a.overlap = overlap_batch<&cgal_peer::overlap>;
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&cgal_peer::overlap>);
   registry.add(std::move(a));
 }
 

@@ -27,7 +27,7 @@ void register_fcl(Registry& registry) {
   a.boundary = Boundary::closed;
   a.accepts_degenerate = false;
   // The batch loop is generated in this file, beside the kernel, so the per-pair call inlines.
-  a.overlap = overlap_batch<&fcl_peer::overlap>;
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&fcl_peer::overlap>);
   registry.add(std::move(a));
 }
 

@@ -25,20 +25,14 @@ Algorithm entry(std::string name, std::string summary) {
 
 void register_guigue03(Registry& registry) {
   Algorithm published = entry("guigue03", "the published overlap test: orientation signs only, no construction");
-  published.overlap = overlap_batch<&guigue03::overlap<double>>;
-  published.overlap_float = overlap_batch<&guigue03::overlap<float>>;
-  published.overlap_counted = overlap_batch<&guigue03::overlap<Counted>>;
+  add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return guigue03::overlap<T>(p); });
   registry.add(std::move(published));
 
   Algorithm with_segment = entry(
       "guigue03-segment",
       "the variant returning the intersection segment (constructed after the signs decide) and a coplanar flag");
-  with_segment.overlap = overlap_batch<&guigue03::overlap_with_segment<double>>;
-  with_segment.segment = segment_batch<&guigue03::segment<double>>;
-  with_segment.overlap_float = overlap_batch<&guigue03::overlap_with_segment<float>>;
-  with_segment.segment_float = segment_batch<&guigue03::segment<float>>;
-  with_segment.overlap_counted = overlap_batch<&guigue03::overlap_with_segment<Counted>>;
-  with_segment.segment_counted = segment_batch<&guigue03::segment<Counted>>;
+  add_level<Level::overlap>(with_segment, []<class T>(const PairT<T>& p) { return guigue03::overlap_with_segment<T>(p); });
+  add_level<Level::segment>(with_segment, []<class T>(const PairT<T>& p) { return guigue03::segment<T>(p); });
   registry.add(std::move(with_segment));
 }
 

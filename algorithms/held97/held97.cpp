@@ -33,24 +33,16 @@ void register_held97(Registry& registry) {
       "held97",
       "ERIT (reconstructed): cut T2 by T1's plane, 2-D segment-vs-triangle; segment = s clipped to T1",
       true);
-  published.overlap = overlap_batch<&held97::overlap<double, true>>;
-  published.segment = segment_batch<&held97::segment<double, true>>;
-  published.overlap_float = overlap_batch<&held97::overlap<float, true>>;
-  published.segment_float = segment_batch<&held97::segment<float, true>>;
-  published.overlap_counted = overlap_batch<&held97::overlap<Counted, true>>;
-  published.segment_counted = segment_batch<&held97::segment<Counted, true>>;
+  add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return held97::overlap<T, true>(p); });
+  add_level<Level::segment>(published, []<class T>(const PairT<T>& p) { return held97::segment<T, true>(p); });
   registry.add(std::move(published));
 
   Algorithm exact = entry(
       "held97-notol",
       "the same reconstruction with the tolerance set to 0 (exact-zero comparisons), to show what it buys",
       false);
-  exact.overlap = overlap_batch<&held97::overlap<double, false>>;
-  exact.segment = segment_batch<&held97::segment<double, false>>;
-  exact.overlap_float = overlap_batch<&held97::overlap<float, false>>;
-  exact.segment_float = segment_batch<&held97::segment<float, false>>;
-  exact.overlap_counted = overlap_batch<&held97::overlap<Counted, false>>;
-  exact.segment_counted = segment_batch<&held97::segment<Counted, false>>;
+  add_level<Level::overlap>(exact, []<class T>(const PairT<T>& p) { return held97::overlap<T, false>(p); });
+  add_level<Level::segment>(exact, []<class T>(const PairT<T>& p) { return held97::segment<T, false>(p); });
   registry.add(std::move(exact));
 }
 

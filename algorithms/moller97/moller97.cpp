@@ -34,34 +34,24 @@ void register_moller97(Registry& registry) {
 
   Algorithm published =
       moller_entry("moller97", "the published test: interval overlap with divisions, EPSILON snap", true);
-  published.overlap = overlap_batch<&overlap<double, true>>;
-  published.overlap_float = overlap_batch<&overlap<float, true>>;
-  published.overlap_counted = overlap_batch<&overlap<Counted, true>>;
+  add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return overlap<T, true>(p); });
   registry.add(std::move(published));
 
   Algorithm exact_zero = moller_entry(
       "moller97-nosnap", "the published test without the EPSILON snap (exact-zero comparisons)", false);
-  exact_zero.overlap = overlap_batch<&overlap<double, false>>;
-  exact_zero.overlap_float = overlap_batch<&overlap<float, false>>;
-  exact_zero.overlap_counted = overlap_batch<&overlap<Counted, false>>;
+  add_level<Level::overlap>(exact_zero, []<class T>(const PairT<T>& p) { return overlap<T, false>(p); });
   registry.add(std::move(exact_zero));
 
   Algorithm division_free = moller_entry(
       "moller97-nodiv", "the author's division-free interval test (later code), EPSILON snap", true);
-  division_free.overlap = overlap_batch<&overlap_division_free<double, true>>;
-  division_free.overlap_float = overlap_batch<&overlap_division_free<float, true>>;
-  division_free.overlap_counted = overlap_batch<&overlap_division_free<Counted, true>>;
+  add_level<Level::overlap>(division_free, []<class T>(const PairT<T>& p) { return overlap_division_free<T, true>(p); });
   registry.add(std::move(division_free));
 
   Algorithm with_segment = moller_entry(
       "moller97-segment",
       "the author's variant returning the intersection segment and a coplanar flag, EPSILON snap", true);
-  with_segment.overlap = overlap_batch<&moller97::overlap_with_segment<double, true>>;
-  with_segment.segment = segment_batch<&segment<double, true>>;
-  with_segment.overlap_float = overlap_batch<&moller97::overlap_with_segment<float, true>>;
-  with_segment.segment_float = segment_batch<&segment<float, true>>;
-  with_segment.overlap_counted = overlap_batch<&moller97::overlap_with_segment<Counted, true>>;
-  with_segment.segment_counted = segment_batch<&segment<Counted, true>>;
+  add_level<Level::overlap>(with_segment, []<class T>(const PairT<T>& p) { return moller97::overlap_with_segment<T, true>(p); });
+  add_level<Level::segment>(with_segment, []<class T>(const PairT<T>& p) { return segment<T, true>(p); });
   registry.add(std::move(with_segment));
 }
 

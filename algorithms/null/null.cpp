@@ -11,8 +11,8 @@ void register_null(Registry& registry) {
   a.summary = "NOT a test: answers a bit of the XOR of the 18 coordinates' bit patterns; its check results are meaningless";
   a.boundary = Boundary::closed;
   a.accepts_degenerate = true;  // it reads coordinates and nothing else: any input is as good
-  a.overlap = overlap_batch<&null_floor::overlap<double>>;
-  a.overlap_float = overlap_batch<&null_floor::overlap<float>>;
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&null_floor::overlap<double>>);
+  a.set_batch<Level::overlap>(Scalar::float_, overlap_batch<&null_floor::overlap<float>>);
   registry.add(std::move(a));
 }
 

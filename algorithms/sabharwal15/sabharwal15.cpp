@@ -29,24 +29,16 @@ void register_sabharwal15(Registry& registry) {
       "sabharwal15",
       "§3 as published: (s,t) inequalities and none/point/segment/area by float equality "
       "(decides overlap of T2's projection onto T1's plane, not intersection)");
-  published.relation = relation_batch<&published_relation<double>>;
-  published.segment = segment_batch<&published_segment<double>>;
-  published.relation_float = relation_batch<&published_relation<float>>;
-  published.segment_float = segment_batch<&published_segment<float>>;
-  published.relation_counted = relation_batch<&published_relation<Counted>>;
-  published.segment_counted = segment_batch<&published_segment<Counted>>;
+  add_level<Level::relation>(published, []<class T>(const PairT<T>& p) { return published_relation<T>(p); });
+  add_level<Level::segment>(published, []<class T>(const PairT<T>& p) { return published_segment<T>(p); });
   registry.add(std::move(published));
 
   Algorithm plane = entry(
       "sabharwal15-plane",
       "§3 plus the dropped equation N·AP + s N·S + t N·T = 0: one interval when the planes cross, "
       "the published system when coplanar");
-  plane.relation = relation_batch<&plane_relation<double>>;
-  plane.segment = segment_batch<&plane_segment<double>>;
-  plane.relation_float = relation_batch<&plane_relation<float>>;
-  plane.segment_float = segment_batch<&plane_segment<float>>;
-  plane.relation_counted = relation_batch<&plane_relation<Counted>>;
-  plane.segment_counted = segment_batch<&plane_segment<Counted>>;
+  add_level<Level::relation>(plane, []<class T>(const PairT<T>& p) { return plane_relation<T>(p); });
+  add_level<Level::segment>(plane, []<class T>(const PairT<T>& p) { return plane_segment<T>(p); });
   registry.add(std::move(plane));
 }
 

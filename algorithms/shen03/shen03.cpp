@@ -20,9 +20,7 @@ void register_shen03(Registry& registry) {
                  "|d| <= 1e-7 counts as 0",
                  false};
   a.accepts_degenerate = false;
-  a.overlap = overlap_batch<&shen03::overlap<double>>;
-  a.overlap_float = overlap_batch<&shen03::overlap<float>>;
-  a.overlap_counted = overlap_batch<&shen03::overlap<Counted>>;
+  add_level<Level::overlap>(a, []<class T>(const PairT<T>& p) { return shen03::overlap<T>(p); });
   registry.add(std::move(a));
 }
 

@@ -28,9 +28,7 @@ void register_tropp06(Registry& registry) {
       "tropp06",
       "the published routine: Cramer's rule with shared minors, division-free, 2-D step in x-y, "
       "edge vectors computed inside the call");
-  published.overlap = overlap_batch<&tropp06::overlap<double, Projection::xy, false>>;
-  published.overlap_float = overlap_batch<&tropp06::overlap<float, Projection::xy, false>>;
-  published.overlap_counted = overlap_batch<&tropp06::overlap<Counted, Projection::xy, false>>;
+  add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return tropp06::overlap<T, Projection::xy, false>(p); });
   registry.add(std::move(published));
 
   Algorithm fixed = entry(
@@ -38,9 +36,7 @@ void register_tropp06(Registry& registry) {
       "corrected: 2-D step in the projection dropping N_A's largest component (x-y fails when A contains "
       "the z direction); D1 on plane A cut along Q1,Q3; a point cut tested as a point; a cut line "
       "through C1 tested against edge 3");
-  fixed.overlap = overlap_batch<&tropp06::overlap<double, Projection::dominant, true>>;
-  fixed.overlap_float = overlap_batch<&tropp06::overlap<float, Projection::dominant, true>>;
-  fixed.overlap_counted = overlap_batch<&tropp06::overlap<Counted, Projection::dominant, true>>;
+  add_level<Level::overlap>(fixed, []<class T>(const PairT<T>& p) { return tropp06::overlap<T, Projection::dominant, true>(p); });
   registry.add(std::move(fixed));
 }
 

@@ -44,12 +44,8 @@ void register_yuhe13(Registry& registry) {
       "yuhe13",
       "computational frame, V-view crossings, x-extent reject as its words say, Cyrus-Beck in H; "
       "nine codes and the segment");
-  published.relation = relation_batch<&relation<double, false>>;
-  published.segment = segment_batch<&segment<double, false>>;
-  published.relation_float = relation_batch<&relation<float, false>>;
-  published.segment_float = segment_batch<&segment<float, false>>;
-  published.relation_counted = relation_batch<&relation<Counted, false>>;
-  published.segment_counted = segment_batch<&segment<Counted, false>>;
+  add_level<Level::relation>(published, []<class T>(const PairT<T>& p) { return relation<T, false>(p); });
+  add_level<Level::segment>(published, []<class T>(const PairT<T>& p) { return segment<T, false>(p); });
   published.stages = {{"transform", stage_run<&in_frame_of_a>},
                       {"frame-test", stage_run<&test_in_frame>, stage_prepare<&in_frame_of_a>},
                       {"both", stage_run<&relation<double, false>>}};
@@ -58,12 +54,8 @@ void register_yuhe13(Registry& registry) {
   Algorithm literal = entry(
       "yuhe13-literal",
       "yuhe13 with the x-extent reject's printed formulas (max(x0,x1) > X_R or min(x0,x1) < X_L)");
-  literal.relation = relation_batch<&relation<double, true>>;
-  literal.segment = segment_batch<&segment<double, true>>;
-  literal.relation_float = relation_batch<&relation<float, true>>;
-  literal.segment_float = segment_batch<&segment<float, true>>;
-  literal.relation_counted = relation_batch<&relation<Counted, true>>;
-  literal.segment_counted = segment_batch<&segment<Counted, true>>;
+  add_level<Level::relation>(literal, []<class T>(const PairT<T>& p) { return relation<T, true>(p); });
+  add_level<Level::segment>(literal, []<class T>(const PairT<T>& p) { return segment<T, true>(p); });
   registry.add(std::move(literal));
 }
 

@@ -60,7 +60,7 @@ const Algorithm& internal_floor() {
     f.name = "floor";
     f.summary = "the harness floor: reads every coordinate (integer XOR, no dependency chain), returns a bit";
     f.accepts_degenerate = true;
-    f.overlap = overlap_batch<&floor_kernel>;
+    f.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&floor_kernel>);
     return f;
   }();
   return a;
@@ -148,11 +148,12 @@ std::vector<Answer> answers_isolated(Batch batch, const Pool& pool, const Isolat
 Score score_entry(const Algorithm& a, Level level, const Pool& pool, const IsolationOptions& isolation,
                   std::vector<Fault>& faults) {
   switch (level) {
-    case Level::overlap: return score_overlap(pool, answers_isolated<Overlap>(a.overlap, pool, isolation, faults));
+    case Level::overlap:
+      return score_overlap(pool, answers_isolated<Overlap>(a.batch<Level::overlap>(), pool, isolation, faults));
     case Level::relation:
-      return score_relation(pool, answers_isolated<RelationAnswer>(a.relation, pool, isolation, faults));
+      return score_relation(pool, answers_isolated<RelationAnswer>(a.batch<Level::relation>(), pool, isolation, faults));
     case Level::segment:
-      return score_segment(pool, answers_isolated<SegmentAnswer>(a.segment, pool, isolation, faults));
+      return score_segment(pool, answers_isolated<SegmentAnswer>(a.batch<Level::segment>(), pool, isolation, faults));
   }
   return {};
 }
@@ -312,9 +313,9 @@ std::optional<OpCounts> count_operations(const Algorithm& a, Level level, const 
   const OpCounts before = counts;
   bool ran = false;
   switch (level) {
-    case Level::overlap: ran = run_counted<Overlap>(a.overlap_counted, pool, counts); break;
-    case Level::relation: ran = run_counted<RelationAnswer>(a.relation_counted, pool, counts); break;
-    case Level::segment: ran = run_counted<SegmentAnswer>(a.segment_counted, pool, counts); break;
+    case Level::overlap: ran = run_counted<Overlap>(a.batch<Level::overlap>(Scalar::counted), pool, counts); break;
+    case Level::relation: ran = run_counted<RelationAnswer>(a.batch<Level::relation>(Scalar::counted), pool, counts); break;
+    case Level::segment: ran = run_counted<SegmentAnswer>(a.batch<Level::segment>(Scalar::counted), pool, counts); break;
   }
   if (!ran) return std::nullopt;
   const OpCounts total = counts;
@@ -457,13 +458,13 @@ int run(const Options& options, std::ostream& out) {
   for (const Pool& pool : pools) {
     const bool extra = stage_pool_extra && &pool == stage_pool;  // built for the stages only
     for (const Algorithm* a : algorithms) {
-      if (a->process) {
+      if (a->kind == Algorithm::Kind::process) {
         // A process plug-in answers over a pipe: its time would be the pipe's. It is checked on
         // every pool like the others, and reported, not timed.
         if (extra) continue;
         std::vector<std::string> names(pool.size());
         for (std::size_t i = 0; i < names.size(); ++i) names[i] = "pair-" + std::to_string(i);
-        const ProcessAnswers got = run_process_plugin({a->process->command, a->process->timeout_seconds}, names, pool.pairs);
+        const ProcessAnswers got = run_process_plugin({a->process.command, a->process.timeout_seconds}, names, pool.pairs);
         for (Level level : levels) {
           if (level == Level::segment || !a->answers(level)) continue;
           auto e = std::make_unique<Entry>();
@@ -563,9 +564,9 @@ int run(const Options& options, std::ostream& out) {
         time_stage(state, entry->stage->run, pairs, n);
       } else {
         switch (*entry->answer_level) {
-          case Level::overlap: time_level<Overlap>(state, entry->algorithm->overlap, pairs, n); break;
-          case Level::relation: time_level<RelationAnswer>(state, entry->algorithm->relation, pairs, n); break;
-          case Level::segment: time_level<SegmentAnswer>(state, entry->algorithm->segment, pairs, n); break;
+          case Level::overlap: time_level<Overlap>(state, entry->algorithm->batch<Level::overlap>(), pairs, n); break;
+          case Level::relation: time_level<RelationAnswer>(state, entry->algorithm->batch<Level::relation>(), pairs, n); break;
+          case Level::segment: time_level<SegmentAnswer>(state, entry->algorithm->batch<Level::segment>(), pairs, n); break;
         }
       }
       const double pairs_done = static_cast<double>(state.iterations()) * static_cast<double>(n);

@@ -137,11 +137,11 @@ TEST(CountingScalar, CountsATinyKnownComputation) {
 TEST(CountingScalar, MollerCountedAnswersAgreeWithDouble) {
   const Algorithm* a = registry().find("moller97");
   ASSERT_NE(a, nullptr);
-  ASSERT_NE(a->overlap_counted, nullptr);
+  ASSERT_TRUE(a->has_batch(Level::overlap, Scalar::counted));
   const Pool p = ratio_pools({0.5}, {400, 3})[0];
   std::vector<Overlap> plain(p.size()), counted(p.size());
-  a->overlap(p.pairs.data(), p.size(), plain.data());
-  a->overlap_counted(p.pairs.data(), p.size(), counted.data());
+  a->batch<Level::overlap>()(p.pairs.data(), p.size(), plain.data());
+  a->batch<Level::overlap>(Scalar::counted)(p.pairs.data(), p.size(), counted.data());
   EXPECT_EQ(plain, counted);
   const auto ops = count_operations(*a, Level::overlap, p);
   ASSERT_TRUE(ops.has_value());
@@ -183,7 +183,7 @@ double first_coordinate(const TrianglePair& p) { return p.t1[0][0] + p.t2[2][2];
 TEST(BenchRun, StageHooksAreTimedAndWritten) {
   Algorithm a;
   a.name = "stagetest";
-  a.overlap = overlap_batch<&moller97::overlap<double, true>>;
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&moller97::overlap<double, true>>);
   a.stages = {{"mirror", stage_run<&mirrored>, nullptr},
               {"read", stage_run<&first_coordinate>, stage_prepare<&mirrored>}};
   Options o = quick_options();

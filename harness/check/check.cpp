@@ -1,5 +1,7 @@
 #include "harness/check/check.hpp"
 
+#include "harness/check/judge.hpp"
+
 #include "harness/run/process_plugin.hpp"
 #include "cases/util/stats.hpp"
 
@@ -15,13 +17,6 @@
 
 namespace tritri {
 namespace {
-
-std::string overlap_word(bool b) { return b ? "1" : "0"; }
-
-std::string relation_word(const RelationAnswer& a) {
-  if (a.relation == Relation::unknown) return "dim:" + std::string(to_string(a.dimension));
-  return std::string(to_string(a.relation));
-}
 
 double point_segment_distance(const Vec3<double>& p, const Vec3<double>& a, const Vec3<double>& b) {
   const Vec3<double> ab = b - a;
@@ -106,11 +101,11 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
     }
   };
 
-  if (algorithm.process) {
+  if (algorithm.kind == Algorithm::Kind::process) {
     std::vector<std::string> names;
     for (std::size_t i : index) names.push_back(cases[i].name);
-    const ProcessAnswers got = run_process_plugin(
-        {algorithm.process->command, algorithm.process->timeout_seconds}, names, pairs);
+    const ProcessAnswers got =
+        run_process_plugin({algorithm.process.command, algorithm.process.timeout_seconds}, names, pairs);
     for (std::size_t k = 0; k < index.size(); ++k) {
       answers[index[k]].overlap = got.overlap[k];
       answers[index[k]].relation = got.relation[k];
@@ -119,21 +114,31 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
     return answers;
   }
 
-  // The answers are written to memory shared with the child that computes them.
-  SharedArray<Overlap> overlap(algorithm.overlap ? pairs.size() : 0);
-  SharedArray<RelationAnswer> relation(algorithm.relation ? pairs.size() : 0);
-  SharedArray<SegmentAnswer> segment(algorithm.segment ? pairs.size() : 0);
+  // The answers are written to memory shared with the child that computes them, one array per
+  // level the algorithm answers.
+  struct Shared {
+    SharedArray<Overlap> overlap;
+    SharedArray<RelationAnswer> relation;
+    SharedArray<SegmentAnswer> segment;
+  } shared{SharedArray<Overlap>(algorithm.has_batch(Level::overlap) ? pairs.size() : 0),
+           SharedArray<RelationAnswer>(algorithm.has_batch(Level::relation) ? pairs.size() : 0),
+           SharedArray<SegmentAnswer>(algorithm.has_batch(Level::segment) ? pairs.size() : 0)};
+  auto shared_of = [&]<Level L>(std::integral_constant<Level, L>) -> SharedArray<AnswerOf<L>>& {
+    if constexpr (L == Level::overlap) return shared.overlap;
+    else if constexpr (L == Level::relation) return shared.relation;
+    else return shared.segment;
+  };
   record_faults(run_isolated(pairs.size(), [&](std::size_t begin, std::size_t end) {
-    const TrianglePair* batch = pairs.data() + begin;
-    if (algorithm.overlap) algorithm.overlap(batch, end - begin, overlap.data() + begin);
-    if (algorithm.relation) algorithm.relation(batch, end - begin, relation.data() + begin);
-    if (algorithm.segment) algorithm.segment(batch, end - begin, segment.data() + begin);
+    for_each_level([&](auto level) {
+      if (const auto batch = algorithm.batch<level()>()) batch(pairs.data() + begin, end - begin, shared_of(level).data() + begin);
+    });
   }, isolation));
   for (std::size_t k = 0; k < index.size(); ++k) {
-    if (answers[index[k]].fate != Fate::ok) continue;
-    if (algorithm.overlap) answers[index[k]].overlap = overlap[k];
-    if (algorithm.relation) answers[index[k]].relation = relation[k];
-    if (algorithm.segment) answers[index[k]].segment = segment[k];
+    Answers& a = answers[index[k]];
+    if (a.fate != Fate::ok) continue;
+    if (algorithm.has_batch(Level::overlap)) a.overlap = shared.overlap[k];
+    if (algorithm.has_batch(Level::relation)) a.relation = shared.relation[k];
+    if (algorithm.has_batch(Level::segment)) a.segment = shared.segment[k];
   }
   return answers;
 }
@@ -162,45 +167,31 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
       continue;
     }
 
-    // Overlap: from the overlap level, else derived from the relation the algorithm gave, else
-    // from its segment answer.
-    Overlap overlap = a.overlap;
-    if (!algorithm.answers(Level::overlap) && !algorithm.answers(Level::relation) && algorithm.answers(Level::segment)) {
-      overlap = a.segment.kind == SegmentKind::unsupported ? Overlap::unsupported
-                : a.segment.kind == SegmentKind::empty    ? Overlap::no
-                                                          : Overlap::yes;
-    }
-    if (!algorithm.answers(Level::overlap) && algorithm.answers(Level::relation)) {
-      const Dimension d = a.relation.relation == Relation::unknown ? a.relation.dimension
-                                                                    : dimension_of(a.relation.relation);
-      overlap = a.relation.relation == Relation::unsupported || d == Dimension::unknown
-                    ? Overlap::unsupported
-                    : (d == Dimension::none ? Overlap::no : Overlap::yes);
-    }
-    bool unsupported = overlap == Overlap::unsupported;
-    if (!unsupported) {
-      const bool said = overlap == Overlap::yes;
-      if (said && !truth.overlap) ++tally.false_positives;
-      if (!said && truth.overlap) ++tally.false_negatives;
-      if (said != truth.overlap) fail(Level::overlap, overlap_word(said), overlap_word(truth.overlap));
+    // Overlap: from the overlap level, else what the relation decides, else the segment's.
+    const Truth judged = truth_of(truth);
+    const Overlap overlap = algorithm.answers(Level::overlap)    ? a.overlap
+                            : algorithm.answers(Level::relation) ? implied_overlap(a.relation)
+                            : algorithm.answers(Level::segment)  ? implied_overlap(a.segment)
+                                                                 : Overlap::unsupported;
+    bool unsupported = false;
+    switch (judge_overlap(overlap, judged)) {
+      case Verdict::unsupported: unsupported = true; break;
+      case Verdict::wrong:
+        ++(overlap == Overlap::yes ? tally.false_positives : tally.false_negatives);
+        fail(Level::overlap, overlap_word(overlap == Overlap::yes), overlap_word(truth.overlap));
+        break;
+      case Verdict::right: break;
     }
 
     if (algorithm.answers(Level::relation)) {
-      const RelationAnswer& r = a.relation;
-      if (r.relation == Relation::unsupported) {
+      const RelationVerdict v = judge_relation(a.relation, judged);
+      if (v.verdict == Verdict::unsupported) {
         unsupported = true;
       } else {
-        // Degenerate input has no relation of two proper triangles: only the dimension is scored.
-        const bool by_dimension = r.relation == Relation::unknown || truth.degenerate;
-        const Dimension said_dim = r.relation == Relation::unknown ? r.dimension : dimension_of(r.relation);
-        const bool wrong = by_dimension ? said_dim != truth.dimension : r.relation != truth.relation;
-        const std::string said = by_dimension ? "dim:" + std::string(to_string(said_dim)) : relation_word(r);
-        const std::string expected = by_dimension ? "dim:" + std::string(to_string(truth.dimension))
-                                                  : std::string(to_string(truth.relation));
-        ++tally.confusion[{said, expected}];
-        if (wrong) {
+        ++tally.confusion[{v.said, v.expected}];
+        if (v.verdict == Verdict::wrong) {
           ++tally.misclassified;
-          fail(Level::relation, relation_word(r), expected);
+          fail(Level::relation, relation_word(a.relation), v.expected);
         }
       }
     }

@@ -55,7 +55,7 @@ void for_each_tally(const CheckResult& result, Row row) {
 
 void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells) {
   if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
-                   [](const Algorithm* a) { return a->relation != nullptr; }))
+                   [](const Algorithm* a) { return a->answers(Level::relation); }))
     return;
   std::size_t name_width = 9, family_width = 6;
   for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
@@ -63,7 +63,7 @@ void print_confusion(std::ostream& out, const CheckResult& result, bool all_cell
   out << "\nrelation confusion (answered->oracle cases; "
       << (all_cells ? "every cell" : "wrong cells only, --confusion for all") << ")\n";
   for_each_tally(result, [&](const Algorithm& a, const std::string& family, const Tally& t) {
-    if (!a.relation) return;
+    if (!a.answers(Level::relation)) return;
     std::string cells;
     for (const auto& [key, count] : t.confusion) {
       if (!all_cells && key.first == key.second) continue;
@@ -78,7 +78,7 @@ void print_confusion(std::ostream& out, const CheckResult& result, bool all_cell
 
 void print_segment_errors(std::ostream& out, const CheckResult& result) {
   if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
-                   [](const Algorithm* a) { return a->segment != nullptr; }))
+                   [](const Algorithm* a) { return a->answers(Level::segment); }))
     return;
   std::size_t name_width = 9, family_width = 6;
   for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
@@ -94,7 +94,7 @@ void print_segment_errors(std::ostream& out, const CheckResult& result) {
   };
   row("algorithm", "family", "answered", "measured", "median", "max", "kind-mismatch", "not-computed");
   for (const Algorithm* a : result.algorithms) {
-    if (!a->segment) continue;
+    if (!a->answers(Level::segment)) continue;
     SegmentTally total;
     for (const auto& family : result.families) {
       auto it = result.tallies.find({a->name, family});

@@ -19,8 +19,8 @@ RelationAnswer always_cross(const TrianglePair&) { return answer_with(Relation::
 Algorithm fake(std::string name, OverlapBatch overlap, RelationBatch relation = nullptr) {
   Algorithm a;
   a.name = std::move(name);
-  a.overlap = overlap;
-  a.relation = relation;
+  if (overlap) a.set_batch<Level::overlap>(Scalar::double_, overlap);
+  if (relation) a.set_batch<Level::relation>(Scalar::double_, relation);
   return a;
 }
 
@@ -169,7 +169,7 @@ TEST(CheckScoring, DimensionOnlyAnswersAreConfusedByDimension) {
 TEST(CheckScoring, SegmentErrorIsRelativeHausdorffAndKindsAreCompared) {
   Algorithm seg;
   seg.name = "seg";
-  seg.segment = segment_batch<&pierce_segment_off>;
+  seg.set_batch<Level::segment>(Scalar::double_, segment_batch<&pierce_segment_off>);
   std::vector<Case> one;
   for (const Case& c : cases())
     if (c.name == "cross-pierce" || c.name == "disjoint-above") one.push_back(c);

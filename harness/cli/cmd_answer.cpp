@@ -1,5 +1,6 @@
 #include "harness/cli/args.hpp"
 #include "harness/check/check.hpp"
+#include "harness/check/judge.hpp"
 #include "harness/cli/commands.hpp"
 
 #include <iostream>
@@ -8,10 +9,17 @@ namespace tritri::cli {
 namespace {
 
 std::string relation_text(const Algorithm& a, const Answers& ans) {
-  if (!a.relation) return "-";
+  if (!a.answers(Level::relation)) return "-";
   if (ans.declined) return "unsupported";
-  if (ans.relation.relation == Relation::unknown) return "dim:" + std::string(to_string(ans.relation.dimension));
-  return std::string(to_string(ans.relation.relation));
+  return relation_word(ans.relation);
+}
+
+// The overlap column: the overlap level's answer, else what the relation decides.
+std::string overlap_text(const Algorithm& a, const Answers& ans) {
+  if (ans.declined && (a.answers(Level::overlap) || a.answers(Level::relation))) return "unsupported";
+  if (a.answers(Level::overlap)) return std::string(to_string(ans.overlap));
+  if (a.answers(Level::relation)) return std::string(to_string(implied_overlap(ans.relation)));
+  return "-";
 }
 
 }  // namespace
@@ -22,7 +30,8 @@ int run_answer(int argc, char** argv) {
     std::cout << "usage: tritri answer --algo NAME [--plugin LIB | --exec COMMAND] FILE...\n\n"
                  "One algorithm's answers for every case, as TSV with a header line:\n"
                  "  name overlap relation segment\n"
-                 "overlap: 0/1 or 'unsupported'; relation: the relation vocabulary (see 'tritri label\n"
+                 "overlap: 0/1 or 'unsupported' (for an algorithm that answers only the relation, what\n"
+                 "its relation decides: a relation of dimension none is 0, any other 1); relation: the relation vocabulary (see 'tritri label\n"
                  "--help'), or dim:<dimension> for an algorithm that gives only the dimension; segment:\n"
                  "x,y,z for a point, x,y,z;x,y,z for a segment, or empty/area/coplanar/unsupported.\n"
                  "'-' marks a level the algorithm does not answer. A degenerate case that the\n"
@@ -48,9 +57,9 @@ int run_answer(int argc, char** argv) {
       continue;
     }
     std::cout << cases[i].name << '\t'
-              << (!algorithm.overlap ? "-" : a.declined ? "unsupported" : to_string(a.overlap)) << '\t'
-              << relation_text(algorithm, a) << '\t'
-              << (!algorithm.segment ? "-" : a.declined ? "unsupported" : segment_text(a.segment)) << '\n';
+              << overlap_text(algorithm, a) << '\t' << relation_text(algorithm, a) << '\t'
+              << (!algorithm.answers(Level::segment) ? "-" : a.declined ? "unsupported" : segment_text(a.segment))
+              << '\n';
   }
   return kOk;
 }

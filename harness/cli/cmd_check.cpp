@@ -23,21 +23,8 @@ std::vector<const Algorithm*> float_instantiations(const std::vector<const Algor
   std::vector<const Algorithm*> out;
   std::string skipped;
   for (const Algorithm* a : chosen) {
-    if (!a->overlap_float && !a->relation_float && !a->segment_float) {
-      skipped += (skipped.empty() ? "" : ", ") + a->name;
-      continue;
-    }
-    Algorithm f = *a;
-    f.name = a->name + "@float";
-    f.summary = a->summary + " [float instantiation: each pair rounded to float]";
-    f.overlap = a->overlap_float;
-    f.relation = a->relation_float;
-    f.segment = a->segment_float;
-    f.overlap_float = f.overlap_counted = nullptr;
-    f.relation_float = f.relation_counted = nullptr;
-    f.segment_float = f.segment_counted = nullptr;
-    f.stages.clear();
-    out.push_back(&copies.emplace_back(std::move(f)));
+    if (auto f = a->on_scalar(Scalar::float_)) out.push_back(&copies.emplace_back(std::move(*f)));
+    else skipped += (skipped.empty() ? "" : ", ") + a->name;
   }
   if (!skipped.empty()) std::cerr << "tritri check --float: no float instantiation, left out: " << skipped << '\n';
   if (out.empty()) throw UsageError("--float: none of the chosen algorithms has a float instantiation");

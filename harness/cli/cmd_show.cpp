@@ -1,5 +1,6 @@
 #include "harness/cli/args.hpp"
 #include "harness/check/check.hpp"
+#include "harness/check/judge.hpp"
 #include "harness/cli/commands.hpp"
 
 #include <cmath>
@@ -61,15 +62,15 @@ int run_show(int argc, char** argv) {
       std::cout << "  " << to_string(ans.fate) << " (" << ans.fault << ")\n";
       continue;
     }
-    if (a->overlap) {
-      const bool wrong = ans.overlap != Overlap::unsupported && (ans.overlap == Overlap::yes) != r.overlap;
+    if (a->answers(Level::overlap)) {
+      const bool wrong = judge_overlap(ans.overlap, truth_of(r)) == Verdict::wrong;
       std::cout << "  overlap " << to_string(ans.overlap) << (wrong ? " (WRONG)" : "");
     }
-    if (a->relation) {
-      const bool wrong = ans.relation.relation != Relation::unknown && ans.relation.relation != r.relation;
-      std::cout << "  relation " << to_string(ans.relation.relation) << (wrong ? " (WRONG)" : "");
+    if (a->answers(Level::relation)) {
+      const bool wrong = judge_relation(ans.relation, truth_of(r)).verdict == Verdict::wrong;
+      std::cout << "  relation " << relation_word(ans.relation) << (wrong ? " (WRONG)" : "");
     }
-    if (a->segment) std::cout << "  segment " << segment_text(ans.segment);
+    if (a->answers(Level::segment)) std::cout << "  segment " << segment_text(ans.segment);
     std::cout << '\n';
   }
   return kOk;

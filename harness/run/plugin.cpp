@@ -94,9 +94,9 @@ const Algorithm& load_plugin(const std::string& path) {
   a.boundary = p->closed ? Boundary::closed : Boundary::open;
   if (p->tolerance_quantity) a.tolerance = {p->tolerance, p->tolerance_quantity, p->tolerance_relative != 0};
   a.accepts_degenerate = p->accepts_degenerate != 0;
-  if (p->overlap) a.overlap = kTrampolines[slot].overlap;
-  if (p->relation) a.relation = kTrampolines[slot].relation;
-  if (p->segment) a.segment = kTrampolines[slot].segment;
+  if (p->overlap) a.set_batch<Level::overlap>(Scalar::double_, kTrampolines[slot].overlap);
+  if (p->relation) a.set_batch<Level::relation>(Scalar::double_, kTrampolines[slot].relation);
+  if (p->segment) a.set_batch<Level::segment>(Scalar::double_, kTrampolines[slot].segment);
   a.folder = "plugin:" + path;
   return add_external_algorithm(std::move(a));
 }

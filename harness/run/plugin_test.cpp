@@ -31,7 +31,7 @@ TEST(Plugin, LoadsAsAnAlgorithmWithWhatItDeclares) {
   const Triangle far{{Vec3<double>(5, 5, 5), Vec3<double>(6, 5, 5), Vec3<double>(5, 6, 5)}};
   TrianglePair pairs[2] = {{t, t}, {t, far}};
   Overlap out[2];
-  a.overlap(pairs, 2, out);
+  a.batch<Level::overlap>()(pairs, 2, out);
   EXPECT_EQ(out[0], Overlap::yes);
   EXPECT_EQ(out[1], Overlap::no);
   // loading the same name twice is refused
@@ -50,7 +50,7 @@ TEST(Plugin, ItsCrashesAndHangsAreContainedByIsolation) {
   options.stall_seconds = 0.3;
   options.chunk = 8;
   const auto faults = run_isolated(pairs.size(), [&](std::size_t b, std::size_t e) {
-    a->overlap(pairs.data() + b, e - b, out.data() + b);
+    a->batch<Level::overlap>()(pairs.data() + b, e - b, out.data() + b);
   }, options);
   ASSERT_EQ(faults.size(), 3u);
   EXPECT_EQ(faults[0].index, 5u);

@@ -189,6 +189,7 @@ const Algorithm& add_process_algorithm(const std::string& command, const std::st
   a.citation = "process plug-in: " + command;
   a.summary = "process plug-in (" + command + ")";
   a.accepts_degenerate = false;
+  a.kind = Algorithm::Kind::process;
   a.process = Algorithm::Process{command, probe.answers_relation, timeout_seconds};
   a.folder = "exec:" + command;
   return add_external_algorithm(std::move(a));

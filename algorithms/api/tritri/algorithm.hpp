@@ -7,7 +7,9 @@
 #pragma once
 
 #include "tritri/answers.hpp"
+#include "tritri/counting.hpp"
 
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -30,9 +32,49 @@ struct Tolerance {
   bool none() const { return quantity.empty(); }
 };
 
-using OverlapBatch = void (*)(const TrianglePair* pairs, std::size_t n, Overlap* out);
-using RelationBatch = void (*)(const TrianglePair* pairs, std::size_t n, RelationAnswer* out);
-using SegmentBatch = void (*)(const TrianglePair* pairs, std::size_t n, SegmentAnswer* out);
+// The answer type of each level, and the batch entry point that produces it.
+template <Level L>
+struct LevelAnswer;
+template <>
+struct LevelAnswer<Level::overlap> {
+  using type = Overlap;
+};
+template <>
+struct LevelAnswer<Level::relation> {
+  using type = RelationAnswer;
+};
+template <>
+struct LevelAnswer<Level::segment> {
+  using type = SegmentAnswer;
+};
+template <Level L>
+using AnswerOf = typename LevelAnswer<L>::type;
+
+template <class Answer>
+using BatchFn = void (*)(const TrianglePair* pairs, std::size_t n, Answer* out);
+using OverlapBatch = BatchFn<Overlap>;
+using RelationBatch = BatchFn<RelationAnswer>;
+using SegmentBatch = BatchFn<SegmentAnswer>;
+template <Level L>
+using LevelBatch = BatchFn<AnswerOf<L>>;
+
+inline constexpr Level kLevels[] = {Level::overlap, Level::relation, Level::segment};
+
+// The scalar type a port is instantiated on. `double` is the port itself (what check and bench
+// judge and time); `float` rounds each pair to float inside the call (the stability report);
+// `counted` is the operation-counting scalar of tritri/counting.hpp (bench's operation counts).
+enum class Scalar : std::uint8_t { double_, float_, counted };
+inline constexpr Scalar kScalars[] = {Scalar::double_, Scalar::float_, Scalar::counted};
+std::string_view to_string(Scalar);  // "double", "float", "counted"
+
+// Calls f(std::integral_constant<Level, L>{}) for each level: code that must handle each level
+// with its own answer type writes one generic lambda instead of a switch.
+template <class F>
+void for_each_level(F&& f) {
+  f(std::integral_constant<Level, Level::overlap>{});
+  f(std::integral_constant<Level, Level::relation>{});
+  f(std::integral_constant<Level, Level::segment>{});
+}
 
 // A part of an algorithm timed on its own by `tritri bench` (the `stage` workload: Yu–He's
 // Table 1 times the transform into the frame alone, the test in the frame alone, and both).
@@ -58,48 +100,56 @@ struct Algorithm {
   Tolerance tolerance;
   bool accepts_degenerate = false;  // zero-area triangles; if false the harness never passes one
 
-  OverlapBatch overlap = nullptr;  // a level is answered when its entry point is set
-  RelationBatch relation = nullptr;
-  SegmentBatch segment = nullptr;
-
-  // The same port instantiated on float (each pair rounded to float inside the call), for the
-  // stability report. Optional; set with the same adapters from the float kernel.
-  OverlapBatch overlap_float = nullptr;
-  RelationBatch relation_float = nullptr;
-  SegmentBatch segment_float = nullptr;
-
-  // The same port instantiated on the operation-counting scalar `Counted`
-  // (tritri/counting.hpp), for the operation counts of `tritri bench`. Optional; e.g.
-  //   a.overlap_counted = overlap_batch<&overlap<Counted, true>>;
-  OverlapBatch overlap_counted = nullptr;
-  RelationBatch relation_counted = nullptr;
-  SegmentBatch segment_counted = nullptr;
+  // How the harness reaches it: batch entry points in this process (timed), or another process
+  // spoken to over a line protocol (harness/run/process_plugin.hpp: checked, never timed).
+  enum class Kind : std::uint8_t { batch, process };
+  Kind kind = Kind::batch;
+  struct Process {
+    std::string command;
+    bool relation = false;  // it answers the relation level as well as overlap
+    double timeout_seconds = 5.0;
+  };
+  Process process;  // Kind::process only
 
   // Stages timed on their own by `tritri bench` (see StageEntry). Optional.
   std::vector<StageEntry> stages;
 
   std::string folder;  // filled in by the registry: the algorithm's folder under algorithms/
 
-  // An algorithm in another process, spoken to over a line protocol (harness/process_plugin.hpp)
-  // instead of through batch entry points: checked for correctness, never timed.
-  struct Process {
-    std::string command;
-    bool relation = false;  // it answers the relation level as well as overlap
-    double timeout_seconds = 5.0;
-  };
-  std::optional<Process> process;
-
-  bool answers(Level level) const {
-    switch (level) {
-      case Level::overlap: return overlap != nullptr || process.has_value();
-      case Level::relation: return relation != nullptr || (process && process->relation);
-      case Level::segment: return segment != nullptr;
-    }
+  // The batch entry point of level L on scalar S; nullptr when it has none.
+  template <Level L>
+  LevelBatch<L> batch(Scalar s = Scalar::double_) const {
+    return reinterpret_cast<LevelBatch<L>>(table_[index(L)][index(s)]);
+  }
+  template <Level L>
+  void set_batch(Scalar s, LevelBatch<L> fn) {
+    table_[index(L)][index(s)] = reinterpret_cast<Erased>(fn);
+  }
+  bool has_batch(Level l, Scalar s = Scalar::double_) const { return table_[index(l)][index(s)] != nullptr; }
+  bool has_scalar(Scalar s) const {
+    for (Level l : kLevels)
+      if (has_batch(l, s)) return true;
     return false;
   }
+
+  // It answers `level` (through a batch entry point on double, or as a process).
+  bool answers(Level level) const {
+    if (kind == Kind::process) return level == Level::overlap || (level == Level::relation && process.relation);
+    return has_batch(level);
+  }
   // It can be timed: its answers come from batch entry points in this process.
-  bool timeable() const { return !process.has_value(); }
+  bool timeable() const { return kind == Kind::batch; }
   std::string levels() const;  // "overlap,relation"
+
+  // The same algorithm answering through its instantiation on `s` in place of double, named
+  // NAME@float (or @counted), with no stages; nullopt when it has no such instantiation.
+  std::optional<Algorithm> on_scalar(Scalar s) const;
+
+ private:
+  using Erased = void (*)();
+  static constexpr std::size_t index(Level l) { return static_cast<std::size_t>(l); }
+  static constexpr std::size_t index(Scalar s) { return static_cast<std::size_t>(s); }
+  std::array<std::array<Erased, 3>, 3> table_{};  // [level][scalar]
 };
 
 // Adapters from a per-pair kernel to a batch entry point. A kernel takes `const PairT<T>&` for
@@ -113,37 +163,73 @@ struct kernel_scalar<R (*)(const PairT<T>&)> {
   using type = T;
 };
 
-template <auto Kernel>
-decltype(auto) call_kernel(const TrianglePair& pair) {
-  using T = typename kernel_scalar<decltype(Kernel)>::type;
+template <class T, class Kernel>
+decltype(auto) call_on(const Kernel& kernel, const TrianglePair& pair) {
   if constexpr (std::is_same_v<T, double>) {
-    return Kernel(pair);
+    return kernel(pair);
   } else {
-    return Kernel(cast<T>(pair));
+    return kernel(cast<T>(pair));
   }
 }
+
+template <class Answer, class Result>
+Answer to_answer(Result&& r) {
+  if constexpr (std::is_same_v<Answer, Overlap> && std::is_same_v<std::decay_t<Result>, bool>) {
+    return r ? Overlap::yes : Overlap::no;
+  } else {
+    return r;
+  }
+}
+
+// The batch loop of level L over a stateless kernel object (a function wrapper or a lambda),
+// instantiated on scalar T: the kernel is inlined into it.
+template <Level L, class T, class Kernel>
+void kernel_batch(const TrianglePair* pairs, std::size_t n, AnswerOf<L>* out) {
+  const Kernel kernel{};
+  for (std::size_t i = 0; i < n; ++i) out[i] = to_answer<AnswerOf<L>>(call_on<T>(kernel, pairs[i]));
+}
+
+template <auto Fn>
+struct FunctionKernel {
+  template <class P>
+  decltype(auto) operator()(const P& pair) const {
+    return Fn(pair);
+  }
+};
+
 }  // namespace detail
 
+// A level's batch entry point from a per-pair function of one scalar type.
 template <auto Kernel>
 void overlap_batch(const TrianglePair* pairs, std::size_t n, Overlap* out) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto answer = detail::call_kernel<Kernel>(pairs[i]);
-    if constexpr (std::is_same_v<std::decay_t<decltype(answer)>, bool>) {
-      out[i] = answer ? Overlap::yes : Overlap::no;
-    } else {
-      out[i] = answer;
-    }
-  }
+  using T = typename detail::kernel_scalar<decltype(Kernel)>::type;
+  detail::kernel_batch<Level::overlap, T, detail::FunctionKernel<Kernel>>(pairs, n, out);
 }
-
 template <auto Kernel>
 void relation_batch(const TrianglePair* pairs, std::size_t n, RelationAnswer* out) {
-  for (std::size_t i = 0; i < n; ++i) out[i] = detail::call_kernel<Kernel>(pairs[i]);
+  using T = typename detail::kernel_scalar<decltype(Kernel)>::type;
+  detail::kernel_batch<Level::relation, T, detail::FunctionKernel<Kernel>>(pairs, n, out);
 }
-
 template <auto Kernel>
 void segment_batch(const TrianglePair* pairs, std::size_t n, SegmentAnswer* out) {
-  for (std::size_t i = 0; i < n; ++i) out[i] = detail::call_kernel<Kernel>(pairs[i]);
+  using T = typename detail::kernel_scalar<decltype(Kernel)>::type;
+  detail::kernel_batch<Level::segment, T, detail::FunctionKernel<Kernel>>(pairs, n, out);
+}
+
+// Registers level L of a port templated on its scalar, in one line: `Kernel` is a stateless
+// generic lambda taking `const PairT<T>&`, e.g.
+//   add_level<Level::overlap>(a, []<class T>(const PairT<T>& p) { return overlap<T, true>(p); });
+// It is instantiated on double, float and the counting scalar (tritri/counting.hpp).
+template <Level L, class Kernel>
+void add_level(Algorithm& a, Kernel) {
+  a.set_batch<L>(Scalar::double_, &detail::kernel_batch<L, double, Kernel>);
+  a.set_batch<L>(Scalar::float_, &detail::kernel_batch<L, float, Kernel>);
+  a.set_batch<L>(Scalar::counted, &detail::kernel_batch<L, Counted, Kernel>);
+}
+// The same on double alone, for tests that call a library on double (FCL, CGAL).
+template <Level L, class Kernel>
+void add_level_double(Algorithm& a, Kernel) {
+  a.set_batch<L>(Scalar::double_, &detail::kernel_batch<L, double, Kernel>);
 }
 
 // Folds an answer (or any value a stage computes) into a 64-bit checksum term: cheap, and
