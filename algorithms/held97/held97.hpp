@@ -3,7 +3,7 @@
 //   graphics tools 2(4):25–44, 1997.
 // ERIT's source was only "available from the author"; no public copy exists. This port follows
 // the descriptions of the test by Möller (1997) and Tropp et al. (2006): segment-in-plane.
-// Steps (numbered as in ../../../shared/notes/algorithms.md):
+// Steps:
 //   1. the plane of T1, with its normal normalised (ERIT's distances are lengths)
 //   2. classify T2's vertices against it with the tolerance: all strictly on one side → reject;
 //      all within the tolerance → coplanar: 2-D triangle–triangle test

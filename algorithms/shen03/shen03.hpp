@@ -1,7 +1,7 @@
 // Shen, Heng & Tang 2003, "A Fast Triangle-Triangle Overlap Test Using Signed Distances",
 // journal of graphics tools 8(1), 2003.
 //
-// The paper is not in ../../../shared/papers; what is known of it is its abstract ("signed
+// The paper was not at hand; what is known of it is its abstract ("signed
 // vertex-plane distances (sufficient if one triangle is wholly to one side of the other) and
 // signed line-line distances of selected edges (otherwise)") and that it decides like
 // Guigue–Devillers with an absolute tolerance of 1e-7. Steps:

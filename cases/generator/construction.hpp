@@ -54,7 +54,7 @@ struct Family {
   bool exact = true;
 };
 
-// The 16 families, in the order of issue 3.
+// The 16 families, in the order of cases/README.md.
 const std::vector<Family>& families();
 const Family* find_family(std::string_view name);
 

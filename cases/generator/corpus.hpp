@@ -1,4 +1,4 @@
-// The singular-configuration corpus (issue 3): every family of singular configuration, built
+// The singular-configuration corpus: every family of singular configuration, built
 // exactly on small-integer and dyadic grids, then transformed (symmetry, scaling, translation,
 // rotation, perturbation). Deterministic: the same options give the same cases, byte for byte,
 // whatever the number of threads.

@@ -1,4 +1,4 @@
-// The family tables, split by theme; families.cpp puts them in the order.
+// The family tables, split by theme; families.cpp puts them in corpus order.
 #pragma once
 
 #include "cases/generator/construction.hpp"
