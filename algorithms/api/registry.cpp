@@ -8,12 +8,8 @@ namespace tritri {
 void register_builtin_algorithms(Registry& registry);
 
 std::string_view to_string(Scalar s) {
-  switch (s) {
-    case Scalar::double_: return "double";
-    case Scalar::float_: return "float";
-    case Scalar::counted: return "counted";
-  }
-  return "?";
+  constexpr std::string_view kNames[] = {"double", "float", "counted"};  // in Scalar's order
+  return kNames[static_cast<std::size_t>(s)];
 }
 
 std::optional<Algorithm> Algorithm::on_scalar(Scalar s) const {

@@ -24,14 +24,11 @@ bool overlap(const TrianglePair& pair) {
 }  // namespace cgal_peer
 
 void register_cgal(Registry& registry) {
-  Algorithm a;
-  a.name = "cgal";
-  a.citation =
-      "The CGAL Project. CGAL User and Reference Manual, 5.5: 3D Intersections, "
-      "CGAL::do_intersect(Triangle_3, Triangle_3), kernel Epick. https://doc.cgal.org/5.5/";
-  a.summary = "CGAL do_intersect on Epick: exact filtered predicates (closed, no tolerance)";
-  a.boundary = Boundary::closed;
-  a.accepts_degenerate = false;  // CGAL's precondition: non-degenerate triangles
+  // Not degenerate input: CGAL's precondition is non-degenerate triangles.
+  Algorithm a({.name = "cgal",
+               .citation = "The CGAL Project. CGAL User and Reference Manual, 5.5: 3D Intersections, "
+                           "CGAL::do_intersect(Triangle_3, Triangle_3), kernel Epick. https://doc.cgal.org/5.5/",
+               .summary = "CGAL do_intersect on Epick: exact filtered predicates (closed, no tolerance)"});
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&cgal_peer::overlap>);
   registry.add(std::move(a));
 }

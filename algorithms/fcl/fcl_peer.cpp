@@ -17,15 +17,11 @@ bool overlap(const TrianglePair& pair) {
 }  // namespace fcl_peer
 
 void register_fcl(Registry& registry) {
-  Algorithm a;
-  a.name = "fcl";
-  a.citation =
-      "J. Pan, S. Chitta, D. Manocha. FCL: A General Purpose Library for Collision and Proximity "
-      "Queries. IEEE ICRA 2012, pp. 3859-3866. Code: FCL 0.7, "
-      "fcl::detail::Intersect<double>::intersect_Triangle";
-  a.summary = "FCL 0.7 intersect_Triangle: separating-axis test on 17 axes, strict separation (closed)";
-  a.boundary = Boundary::closed;
-  a.accepts_degenerate = false;
+  Algorithm a({.name = "fcl",
+               .citation = "J. Pan, S. Chitta, D. Manocha. FCL: A General Purpose Library for Collision and "
+                           "Proximity Queries. IEEE ICRA 2012, pp. 3859-3866. Code: FCL 0.7, "
+                           "fcl::detail::Intersect<double>::intersect_Triangle",
+               .summary = "FCL 0.7 intersect_Triangle: separating-axis test on 17 axes, strict separation (closed)"});
   // The batch loop is generated in this file, beside the kernel, so the per-pair call inlines.
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&fcl_peer::overlap>);
   registry.add(std::move(a));

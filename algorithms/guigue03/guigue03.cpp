@@ -11,14 +11,9 @@ constexpr const char* kCitation =
     "Orientation Predicates. journal of graphics tools 8(1):25-32, 2003. "
     "doi:10.1080/10867651.2003.10487580";
 
+// Closed; no tolerance: every decision is the sign of a determinant.
 Algorithm entry(std::string name, std::string summary) {
-  Algorithm a;
-  a.name = std::move(name);
-  a.citation = kCitation;
-  a.summary = std::move(summary);
-  a.boundary = Boundary::closed;
-  a.accepts_degenerate = false;  // tolerance: none, every decision is the sign of a determinant
-  return a;
+  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
 }
 
 }  // namespace

@@ -11,19 +11,16 @@ constexpr const char* kCitation =
     "graphics tools 2(4):25-44, 1997. (Triangle-triangle test reconstructed from the descriptions "
     "by Moller 1997 and Tropp et al. 2006; the source was never published.)";
 
+Tolerance length_tolerance() {
+  return {held97::kZero,
+          "length (input units): distance of T2's vertices to T1's plane (unit normal) and, in the 2-D "
+          "projection, of a point to an edge line; within it counts as on",
+          false};
+}
+
 Algorithm entry(std::string name, std::string summary, bool tolerant) {
-  Algorithm a;
-  a.name = std::move(name);
-  a.citation = kCitation;
-  a.summary = std::move(summary);
-  a.boundary = Boundary::closed;
-  if (tolerant)
-    a.tolerance = {held97::kZero,
-                   "length (input units): distance of T2's vertices to T1's plane (unit normal) and, in "
-                   "the 2-D projection, of a point to an edge line; within it counts as on",
-                   false};
-  a.accepts_degenerate = false;
-  return a;
+  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary),
+                    .tolerance = tolerant ? length_tolerance() : Tolerance{}});
 }
 
 }  // namespace

@@ -15,14 +15,8 @@ Tolerance published_snap() {
 }
 
 Algorithm moller_entry(std::string name, std::string summary, bool snap) {
-  Algorithm a;
-  a.name = std::move(name);
-  a.citation = kCitation;
-  a.summary = std::move(summary);
-  a.boundary = Boundary::closed;
-  if (snap) a.tolerance = published_snap();
-  a.accepts_degenerate = false;
-  return a;
+  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary),
+                    .tolerance = snap ? published_snap() : Tolerance{}});
 }
 
 }  // namespace

@@ -11,14 +11,9 @@ constexpr const char* kCitation =
     "D. C. Wyld et al. (eds.), WiMo, ITCSE, ICAIT, NC 2015, Computer Science & Information "
     "Technology (CS & IT), pp. 27-35, 2015. doi:10.5121/csit.2015.51003";
 
+// Closed: 0 ≤ u, v, s, t and u + v, s + t ≤ 1. Not degenerate input: δ = |U×V|² = 0 divides.
 Algorithm entry(std::string name, std::string summary) {
-  Algorithm a;
-  a.name = std::move(name);
-  a.citation = kCitation;
-  a.summary = std::move(summary);
-  a.boundary = Boundary::closed;  // 0 ≤ u, v, s, t and u + v, s + t ≤ 1: closed triangles
-  a.accepts_degenerate = false;   // δ = |U×V|² = 0 divides
-  return a;
+  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
 }
 
 }  // namespace

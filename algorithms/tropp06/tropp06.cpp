@@ -10,14 +10,9 @@ constexpr const char* kCitation =
     "Oren Tropp, Ayellet Tal, Ilan Shimshoni. A fast triangle to triangle intersection test for "
     "collision detection. Computer Animation and Virtual Worlds 17(5):527-535, 2006. doi:10.1002/cav.115";
 
+// Closed; no tolerance: every comparison is against zero.
 Algorithm entry(std::string name, std::string summary) {
-  Algorithm a;
-  a.name = std::move(name);
-  a.citation = kCitation;
-  a.summary = std::move(summary);
-  a.boundary = Boundary::closed;
-  a.accepts_degenerate = false;  // tolerance: none, every comparison is against zero
-  return a;
+  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
 }
 
 }  // namespace

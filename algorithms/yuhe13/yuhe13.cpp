@@ -11,14 +11,9 @@ constexpr const char* kCitation =
     "(空间两三角形的相交问题). Journal of Graphics (图学学报) 34(4):54-62, 2013. "
     "CN 2095-302X(2013)04-0054-09";
 
+// Closed: contact is reported (codes 2, 3, -3, -4). The paper: the caller excludes degenerate triangles.
 Algorithm entry(std::string name, std::string summary) {
-  Algorithm a;
-  a.name = std::move(name);
-  a.citation = kCitation;
-  a.summary = std::move(summary);
-  a.boundary = Boundary::closed;  // contact is reported (codes 2, 3, -3, -4)
-  a.accepts_degenerate = false;   // the paper: the caller excludes degenerate triangles
-  return a;
+  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
 }
 
 // Yu–He's Table 1 times the transform into A's frame and the test in that frame apart. The

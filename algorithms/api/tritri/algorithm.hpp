@@ -92,7 +92,27 @@ struct StageEntry {
   StagePrepareBatch prepare = nullptr;
 };
 
+// What an algorithm says about itself, for registering it in one expression:
+//   Algorithm a({.name = "moller97", .citation = kCitation, .summary = "...", .tolerance = snap});
+struct Declaration {
+  std::string name;
+  std::string citation;
+  std::string summary;
+  Boundary boundary = Boundary::closed;
+  Tolerance tolerance = {};
+  bool accepts_degenerate = false;
+};
+
 struct Algorithm {
+  Algorithm() = default;
+  explicit Algorithm(Declaration d)
+      : name(std::move(d.name)),
+        citation(std::move(d.citation)),
+        summary(std::move(d.summary)),
+        boundary(d.boundary),
+        tolerance(std::move(d.tolerance)),
+        accepts_degenerate(d.accepts_degenerate) {}
+
   std::string name;      // short, unique, used on the command line: "moller97"
   std::string citation;  // full reference
   std::string summary;   // one line: what this entry is (which variant, what it changes)
