@@ -12,6 +12,12 @@ std::string_view to_string(Scalar s) {
   return kNames[static_cast<std::size_t>(s)];
 }
 
+Algorithm variant(Declaration paper, std::string name, std::string summary) {
+  paper.name = std::move(name);
+  paper.summary = std::move(summary);
+  return Algorithm(std::move(paper));
+}
+
 std::optional<Algorithm> Algorithm::on_scalar(Scalar s) const {
   if (s == Scalar::double_) return *this;
   if (kind != Kind::batch || !has_scalar(s)) return std::nullopt;

@@ -4,26 +4,16 @@
 #include "tritri/counting.hpp"
 
 namespace tritri {
-namespace {
-
-constexpr const char* kCitation =
-    "Philippe Guigue, Olivier Devillers. Fast and Robust Triangle-Triangle Overlap Test Using "
-    "Orientation Predicates. journal of graphics tools 8(1):25-32, 2003. "
-    "doi:10.1080/10867651.2003.10487580";
-
-// Closed; no tolerance: every decision is the sign of a determinant.
-Algorithm entry(std::string name, std::string summary) {
-  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
-}
-
-}  // namespace
-
 void register_guigue03(Registry& registry) {
-  Algorithm published = entry("guigue03", "the published overlap test: orientation signs only, no construction");
+  // Closed; no tolerance: every decision is the sign of a determinant.
+  const Declaration paper{.citation = "Philippe Guigue, Olivier Devillers. Fast and Robust Triangle-Triangle Overlap Test Using "
+                                      "Orientation Predicates. journal of graphics tools 8(1):25-32, 2003. "
+                                      "doi:10.1080/10867651.2003.10487580"};
+  Algorithm published = variant(paper, "guigue03", "the published overlap test: orientation signs only, no construction");
   add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return guigue03::overlap<T>(p); });
   registry.add(std::move(published));
 
-  Algorithm with_segment = entry(
+  Algorithm with_segment = variant(paper,
       "guigue03-segment",
       "the variant returning the intersection segment (constructed after the signs decide) and a coplanar flag");
   add_level<Level::overlap>(with_segment, []<class T>(const PairT<T>& p) { return guigue03::overlap_with_segment<T>(p); });

@@ -6,10 +6,6 @@
 namespace tritri {
 namespace {
 
-constexpr const char* kCitation =
-    "Martin Held. ERIT - A Collection of Efficient and Reliable Intersection Tests. journal of "
-    "graphics tools 2(4):25-44, 1997. (Triangle-triangle test reconstructed from the descriptions "
-    "by Moller 1997 and Tropp et al. 2006; the source was never published.)";
 
 Tolerance length_tolerance() {
   return {held97::kZero,
@@ -18,15 +14,19 @@ Tolerance length_tolerance() {
           false};
 }
 
-Algorithm entry(std::string name, std::string summary, bool tolerant) {
-  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary),
-                    .tolerance = tolerant ? length_tolerance() : Tolerance{}});
-}
 
 }  // namespace
 
 void register_held97(Registry& registry) {
-  Algorithm published = entry(
+  const Declaration paper{.citation = "Martin Held. ERIT - A Collection of Efficient and Reliable Intersection Tests. journal of "
+                                      "graphics tools 2(4):25-44, 1997. (Triangle-triangle test reconstructed from the descriptions "
+                                      "by Moller 1997 and Tropp et al. 2006; the source was never published.)"};
+  auto variant_with = [&](std::string name, std::string summary, bool tolerant) {
+    Algorithm a = variant(paper, std::move(name), std::move(summary));
+    if (tolerant) a.tolerance = length_tolerance();
+    return a;
+  };
+  Algorithm published = variant_with(
       "held97",
       "ERIT (reconstructed): cut T2 by T1's plane, 2-D segment-vs-triangle; segment = s clipped to T1",
       true);
@@ -34,7 +34,7 @@ void register_held97(Registry& registry) {
   add_level<Level::segment>(published, []<class T>(const PairT<T>& p) { return held97::segment<T, true>(p); });
   registry.add(std::move(published));
 
-  Algorithm exact = entry(
+  Algorithm exact = variant_with(
       "held97-notol",
       "the same reconstruction with the tolerance set to 0 (exact-zero comparisons), to show what it buys",
       false);

@@ -4,23 +4,13 @@
 #include "tritri/counting.hpp"
 
 namespace tritri {
-namespace {
-
-constexpr const char* kCitation =
-    "Chaman L. Sabharwal, Jennifer L. Leopold. A Triangle-Triangle Intersection Algorithm. In "
-    "D. C. Wyld et al. (eds.), WiMo, ITCSE, ICAIT, NC 2015, Computer Science & Information "
-    "Technology (CS & IT), pp. 27-35, 2015. doi:10.5121/csit.2015.51003";
-
-// Closed: 0 ≤ u, v, s, t and u + v, s + t ≤ 1. Not degenerate input: δ = |U×V|² = 0 divides.
-Algorithm entry(std::string name, std::string summary) {
-  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
-}
-
-}  // namespace
-
 void register_sabharwal15(Registry& registry) {
+  // Closed: 0 ≤ u, v, s, t and u + v, s + t ≤ 1. Not degenerate input: δ = |U×V|² = 0 divides.
+  const Declaration paper{.citation = "Chaman L. Sabharwal, Jennifer L. Leopold. A Triangle-Triangle Intersection Algorithm. In "
+                                      "D. C. Wyld et al. (eds.), WiMo, ITCSE, ICAIT, NC 2015, Computer Science & Information "
+                                      "Technology (CS & IT), pp. 27-35, 2015. doi:10.5121/csit.2015.51003"};
   using namespace sabharwal15;
-  Algorithm published = entry(
+  Algorithm published = variant(paper,
       "sabharwal15",
       "§3 as published: (s,t) inequalities and none/point/segment/area by float equality "
       "(decides overlap of T2's projection onto T1's plane, not intersection)");
@@ -28,7 +18,7 @@ void register_sabharwal15(Registry& registry) {
   add_level<Level::segment>(published, []<class T>(const PairT<T>& p) { return published_segment<T>(p); });
   registry.add(std::move(published));
 
-  Algorithm plane = entry(
+  Algorithm plane = variant(paper,
       "sabharwal15-plane",
       "§3 plus the dropped equation N·AP + s N·S + t N·T = 0: one interval when the planes cross, "
       "the published system when coplanar");

@@ -4,29 +4,19 @@
 #include "tritri/counting.hpp"
 
 namespace tritri {
-namespace {
-
-constexpr const char* kCitation =
-    "Oren Tropp, Ayellet Tal, Ilan Shimshoni. A fast triangle to triangle intersection test for "
-    "collision detection. Computer Animation and Virtual Worlds 17(5):527-535, 2006. doi:10.1002/cav.115";
-
-// Closed; no tolerance: every comparison is against zero.
-Algorithm entry(std::string name, std::string summary) {
-  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
-}
-
-}  // namespace
-
 void register_tropp06(Registry& registry) {
+  // Closed; no tolerance: every comparison is against zero.
+  const Declaration paper{.citation = "Oren Tropp, Ayellet Tal, Ilan Shimshoni. A fast triangle to triangle intersection test for "
+                                      "collision detection. Computer Animation and Virtual Worlds 17(5):527-535, 2006. doi:10.1002/cav.115"};
   using tropp06::Projection;
-  Algorithm published = entry(
+  Algorithm published = variant(paper,
       "tropp06",
       "the published routine: Cramer's rule with shared minors, division-free, 2-D step in x-y, "
       "edge vectors computed inside the call");
   add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return tropp06::overlap<T, Projection::xy, false>(p); });
   registry.add(std::move(published));
 
-  Algorithm fixed = entry(
+  Algorithm fixed = variant(paper,
       "tropp06-fixed",
       "corrected: 2-D step in the projection dropping N_A's largest component (x-y fails when A contains "
       "the z direction); D1 on plane A cut along Q1,Q3; a point cut tested as a point; a cut line "

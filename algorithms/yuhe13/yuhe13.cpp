@@ -6,15 +6,7 @@
 namespace tritri {
 namespace {
 
-constexpr const char* kCitation =
-    "Yu Haiyan, He Yuanjun. Testing the Intersection Status of Two Triangles "
-    "(空间两三角形的相交问题). Journal of Graphics (图学学报) 34(4):54-62, 2013. "
-    "CN 2095-302X(2013)04-0054-09";
 
-// Closed: contact is reported (codes 2, 3, -3, -4). The paper: the caller excludes degenerate triangles.
-Algorithm entry(std::string name, std::string summary) {
-  return Algorithm({.name = std::move(name), .citation = kCitation, .summary = std::move(summary)});
-}
 
 // Yu–He's Table 1 times the transform into A's frame and the test in that frame apart. The
 // stage adapters take double pairs, so a transformed pair travels as a TrianglePair.
@@ -34,8 +26,12 @@ RelationAnswer test_in_frame(const TrianglePair& framed) {
 }  // namespace
 
 void register_yuhe13(Registry& registry) {
+  // Closed: contact is reported (codes 2, 3, -3, -4). The paper: the caller excludes degenerate triangles.
+  const Declaration paper{.citation = "Yu Haiyan, He Yuanjun. Testing the Intersection Status of Two Triangles "
+                                      "(空间两三角形的相交问题). Journal of Graphics (图学学报) 34(4):54-62, 2013. "
+                                      "CN 2095-302X(2013)04-0054-09"};
   using namespace yuhe13;
-  Algorithm published = entry(
+  Algorithm published = variant(paper,
       "yuhe13",
       "computational frame, V-view crossings, x-extent reject as its words say, Cyrus-Beck in H; "
       "nine codes and the segment");
@@ -46,7 +42,7 @@ void register_yuhe13(Registry& registry) {
                       {"both", stage_run<&relation<double, false>>}};
   registry.add(std::move(published));
 
-  Algorithm literal = entry(
+  Algorithm literal = variant(paper,
       "yuhe13-literal",
       "yuhe13 with the x-extent reject's printed formulas (max(x0,x1) > X_R or min(x0,x1) < X_L)");
   add_level<Level::relation>(literal, []<class T>(const PairT<T>& p) { return relation<T, true>(p); });

@@ -103,6 +103,10 @@ struct Declaration {
   bool accepts_degenerate = false;
 };
 
+struct Algorithm;
+// One variant of a paper's entry: the paper's declaration under the variant's name and summary.
+Algorithm variant(Declaration paper, std::string name, std::string summary);
+
 struct Algorithm {
   Algorithm() = default;
   explicit Algorithm(Declaration d)
