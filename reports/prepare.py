@@ -1,16 +1,20 @@
 #!/usr/bin/env python3
 """Helpers scripts/run calls between the tritri commands (not part of the report itself).
 
-  prepare.py derive CORPUS_DIR SUITES_DIR OUT_DIR     regrouped case files for check (see derive.py)
   prepare.py manifest CORPUS_DIR OUT.json --seed S --command CMD
   prepare.py provenance OUT.json --build-dir DIR --command CMD --started ISO
   prepare.py steps STEPS.tsv OUT.json [--baseline-inputs TEXT --baseline-verdict TEXT]
+  prepare.py groupings symmetry|sweeps   the `tritri check --group-by` specs the report reads, one a line
+  prepare.py suites                      the papers' named suites: CASES <TAB> LABEL <TAB> RESULTS.json
 
+None of them reads a case: what the corpus holds, the report reads from `tritri check`'s JSON.
 Every JSON file is written beside its final name and renamed into place.
 """
 
 import argparse
 import datetime
+import hashlib
+import json
 import os
 import platform
 import socket
@@ -19,10 +23,34 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from tritri_report import derive  # noqa: E402
+from tritri_report import groups, published  # noqa: E402
 
 PACKAGES = ["g++", "cmake", "libcgal-dev", "libfcl-dev", "libeigen3-dev", "libbenchmark-dev", "libgmp-dev",
             "python3-matplotlib"]
+
+
+def write_json(path, doc):
+    tmp = "%s.tmp.%d" % (path, os.getpid())
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            json.dump(doc, f, indent=1, sort_keys=False)
+            f.write("\n")
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def manifest(corpus_dir, seed, command):
+    """Which corpus this is: the command and seed that made it, its files, a hash of their bytes."""
+    files = sorted(n for n in os.listdir(corpus_dir) if n.endswith(".cases"))
+    digest = hashlib.sha256()
+    for name in files:
+        digest.update(name.encode())
+        with open(os.path.join(corpus_dir, name), "rb") as f:
+            digest.update(f.read())
+    return {"schema": "tritri-corpus-manifest/2", "command": command, "seed": seed, "files": files,
+            "sha256": digest.hexdigest()}
 
 
 def _run(cmd):
@@ -118,7 +146,7 @@ def provenance(args):
         "started": args.started,
         "finished": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M:%S UTC"),
     }
-    derive.write_json(args.out, doc)
+    write_json(args.out, doc)
 
 
 def steps(args):
@@ -132,16 +160,21 @@ def steps(args):
     doc = {"schema": "tritri-steps/1", "steps": rows}
     if args.baseline_verdict:
         doc["baseline"] = {"inputs": args.baseline_inputs, "verdict": args.baseline_verdict}
-    derive.write_json(args.out, doc)
+    write_json(args.out, doc)
+
+
+def suites():
+    """Each named suite a paper's published file asks to check, and how the paper groups it."""
+    folders = sorted(os.listdir(published.ALGORITHMS_DIR))
+    for doc in published.load(folders).values():
+        s = doc.get("suite")
+        if s:
+            print("%s\t%s\t%s" % (s["cases"], s["group_by"], s["results"]))
 
 
 def main(argv=None):
     p = argparse.ArgumentParser(description="helpers for scripts/run")
     sub = p.add_subparsers(dest="what", required=True)
-    d = sub.add_parser("derive")
-    d.add_argument("corpus_dir")
-    d.add_argument("suites_dir")
-    d.add_argument("out_dir")
     m = sub.add_parser("manifest")
     m.add_argument("corpus_dir")
     m.add_argument("out")
@@ -157,13 +190,18 @@ def main(argv=None):
     s.add_argument("out")
     s.add_argument("--baseline-inputs", default="")
     s.add_argument("--baseline-verdict", default="")
+    g = sub.add_parser("groupings")
+    g.add_argument("which", choices=["symmetry", "sweeps"])
+    sub.add_parser("suites")
     args = p.parse_args(argv)
-    if args.what == "derive":
-        derive.write_derived(args.corpus_dir, args.suites_dir, args.out_dir)
-    elif args.what == "manifest":
-        derive.write_json(args.out, derive.manifest(args.corpus_dir, args.seed, args.command))
+    if args.what == "manifest":
+        write_json(args.out, manifest(args.corpus_dir, args.seed, args.command))
     elif args.what == "provenance":
         provenance(args)
+    elif args.what == "groupings":
+        print("\n".join([groups.SYMMETRY_GROUPING] if args.which == "symmetry" else groups.sweep_groupings()))
+    elif args.what == "suites":
+        suites()
     else:
         steps(args)
     return 0

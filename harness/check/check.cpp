@@ -143,75 +143,105 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
   return answers;
 }
 
+namespace {
+
+// One case's outcome, as the tally of that case alone; its disagreements go to `failures`.
+Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const OracleRecord& truth,
+                 const Answers& a, std::vector<Failure>& failures) {
+  Tally tally;
+  ++tally.cases;
+  if (a.declined) {
+    ++tally.unsupported;
+    return tally;
+  }
+  auto fail = [&](Level level, std::string answer, std::string expected) {
+    failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected), ""});
+  };
+  if (a.fate != Fate::ok) {
+    ++(a.fate == Fate::crash ? tally.crashes : tally.timeouts);
+    failures.push_back({algorithm.name, i, Level::overlap, to_string(a.fate), overlap_word(truth.overlap), a.fault});
+    return tally;
+  }
+
+  // Overlap: from the overlap level, else what the relation decides, else the segment's.
+  const Truth judged = truth_of(truth);
+  const Overlap overlap = algorithm.answers(Level::overlap)    ? a.overlap
+                          : algorithm.answers(Level::relation) ? implied_overlap(a.relation)
+                          : algorithm.answers(Level::segment)  ? implied_overlap(a.segment)
+                                                               : Overlap::unsupported;
+  bool unsupported = false;
+  switch (judge_overlap(overlap, judged)) {
+    case Verdict::unsupported: unsupported = true; break;
+    case Verdict::wrong:
+      ++(overlap == Overlap::yes ? tally.false_positives : tally.false_negatives);
+      fail(Level::overlap, overlap_word(overlap == Overlap::yes), overlap_word(truth.overlap));
+      break;
+    case Verdict::right: break;
+  }
+
+  if (algorithm.answers(Level::relation)) {
+    const RelationVerdict v = judge_relation(a.relation, judged);
+    if (v.verdict == Verdict::unsupported) {
+      unsupported = true;
+    } else {
+      ++tally.confusion[{v.said, v.expected}];
+      if (v.verdict == Verdict::wrong) {
+        ++tally.misclassified;
+        fail(Level::relation, relation_word(a.relation), v.expected);
+      }
+    }
+  }
+  if (algorithm.answers(Level::segment)) score_segment(a.segment, c.pair, truth, tally.segment);
+  if (unsupported) {
+    ++tally.unsupported;
+    fail(Level::overlap, "unsupported", overlap_word(truth.overlap));
+  }
+  return tally;
+}
+
+void add_tally(Tally& into, const Tally& t) {
+  into.cases += t.cases;
+  into.false_positives += t.false_positives;
+  into.false_negatives += t.false_negatives;
+  into.misclassified += t.misclassified;
+  into.unsupported += t.unsupported;
+  into.crashes += t.crashes;
+  into.timeouts += t.timeouts;
+  for (const auto& [cell, count] : t.confusion) into.confusion[cell] += count;
+  into.segment.answered += t.segment.answered;
+  into.segment.kind_mismatches += t.segment.kind_mismatches;
+  into.segment.not_computed += t.segment.not_computed;
+  into.segment.errors.insert(into.segment.errors.end(), t.segment.errors.begin(), t.segment.errors.end());
+}
+
+void note_family(CheckResult& result, const std::string& family) {
+  if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
+    result.families.push_back(family);
+}
+
+}  // namespace
+
 void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
            CheckResult& result) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    const std::string family = cases[i].family();
-    if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
-      result.families.push_back(family);
-    Tally& tally = result.tallies[{algorithm.name, family}];
-    ++tally.cases;
-    const Answers& a = answers[i];
-    const OracleRecord& truth = oracle[i];
-    if (a.declined) {
-      ++tally.unsupported;
-      continue;
-    }
-    auto fail = [&](Level level, std::string answer, std::string expected) {
-      result.failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected), ""});
-    };
-    if (a.fate != Fate::ok) {
-      ++(a.fate == Fate::crash ? tally.crashes : tally.timeouts);
-      result.failures.push_back({algorithm.name, i, Level::overlap, to_string(a.fate), overlap_word(truth.overlap), a.fault});
-      continue;
-    }
-
-    // Overlap: from the overlap level, else what the relation decides, else the segment's.
-    const Truth judged = truth_of(truth);
-    const Overlap overlap = algorithm.answers(Level::overlap)    ? a.overlap
-                            : algorithm.answers(Level::relation) ? implied_overlap(a.relation)
-                            : algorithm.answers(Level::segment)  ? implied_overlap(a.segment)
-                                                                 : Overlap::unsupported;
-    bool unsupported = false;
-    switch (judge_overlap(overlap, judged)) {
-      case Verdict::unsupported: unsupported = true; break;
-      case Verdict::wrong:
-        ++(overlap == Overlap::yes ? tally.false_positives : tally.false_negatives);
-        fail(Level::overlap, overlap_word(overlap == Overlap::yes), overlap_word(truth.overlap));
-        break;
-      case Verdict::right: break;
-    }
-
-    if (algorithm.answers(Level::relation)) {
-      const RelationVerdict v = judge_relation(a.relation, judged);
-      if (v.verdict == Verdict::unsupported) {
-        unsupported = true;
-      } else {
-        ++tally.confusion[{v.said, v.expected}];
-        if (v.verdict == Verdict::wrong) {
-          ++tally.misclassified;
-          fail(Level::relation, relation_word(a.relation), v.expected);
-        }
-      }
-    }
-    if (algorithm.answers(Level::segment)) score_segment(a.segment, cases[i].pair, truth, tally.segment);
-    if (unsupported) {
-      ++tally.unsupported;
-      fail(Level::overlap, "unsupported", overlap_word(truth.overlap));
+    const Tally one = score_case(algorithm, i, cases[i], oracle[i], answers[i], result.failures);
+    for (const std::string& family : groups_of(cases[i], result.groupings)) {
+      const auto [tally, first] = result.tallies.try_emplace({algorithm.name, family});
+      if (first) note_family(result, family);
+      add_tally(tally->second, one);
     }
   }
 }
 
 CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation) {
+                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation,
+                      const std::vector<Grouping>& groupings) {
   CheckResult result;
   result.algorithms = algorithms;
-  for (const auto& c : cases) {
-    const std::string family = c.family();
-    if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
-      result.families.push_back(family);
-  }
+  result.groupings = groupings;
+  for (const auto& c : cases)
+    for (const std::string& family : groups_of(c, groupings)) note_family(result, family);
   for (const Algorithm* algorithm : algorithms)
     score(*algorithm, cases, oracle, answer_cases(*algorithm, cases, isolation), result);
   return result;

@@ -3,6 +3,7 @@
 
 #include "cases/casefile.hpp"
 #include "cases/label.hpp"
+#include "harness/check/grouping.hpp"
 #include "harness/run/isolation.hpp"
 #include "cases/oracle/oracle.hpp"
 #include "tritri/algorithm.hpp"
@@ -78,17 +79,20 @@ double pair_size(const TrianglePair& pair);
 
 struct CheckResult {
   std::vector<const Algorithm*> algorithms;
-  std::vector<std::string> families;  // in order of first appearance
-  std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, family)
+  std::vector<Grouping> groupings;    // none: tallied per family (grouping.hpp)
+  std::vector<std::string> families;  // families, or groups; in order of first appearance
+  std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, family or group)
   std::vector<Failure> failures;
 };
 
-// Scores one algorithm's answers against the oracle and adds them to `result`.
+// Scores one algorithm's answers against the oracle and adds them to `result`, each case to the
+// tally of each of its groups (`result.groupings`).
 void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
            CheckResult& result);
 
 CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation = {});
+                      const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation = {},
+                      const std::vector<Grouping>& groupings = {});
 
 }  // namespace tritri

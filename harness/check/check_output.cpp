@@ -30,7 +30,15 @@ nlohmann::json algorithm_json(const Algorithm& a) {
           {"levels", levels},
           {"boundary", a.boundary == Boundary::closed ? "closed" : "open"},
           {"tolerance", tolerance},
-          {"accepts_degenerate", a.accepts_degenerate}};
+          {"accepts_degenerate", a.accepts_degenerate},
+          {"folder", a.folder}};
+}
+
+// The groupings as they were given on the command line: "variant=symmetry,@base".
+std::string grouping_text(const Grouping& g) {
+  std::string text;
+  for (const auto& [key, value] : g.keys) text += (text.empty() ? "" : ",") + key + (value ? "=" + *value : "");
+  return text;
 }
 
 nlohmann::json number_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
@@ -183,6 +191,8 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
   doc["case_count"] = cases.size();
   doc["algorithms"] = nlohmann::json::array();
   for (const Algorithm* a : result.algorithms) doc["algorithms"].push_back(algorithm_json(*a));
+  doc["group_by"] = nlohmann::json::array();
+  for (const Grouping& g : result.groupings) doc["group_by"].push_back(grouping_text(g));
   doc["families"] = result.families;
   doc["tallies"] = nlohmann::json::array();
   for (const Algorithm* a : result.algorithms)
@@ -222,6 +232,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
     doc["failures"].push_back({{"algorithm", f.algorithm},
                                {"case", c.name},
                                {"family", c.family()},
+                               {"groups", groups_of(c, result.groupings)},
                                {"level", std::string(to_string(f.level))},
                                {"answer", f.answer},
                                {"oracle", f.expected},

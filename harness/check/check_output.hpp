@@ -28,7 +28,8 @@ void print_segment_errors(std::ostream& out, const CheckResult& result);
 void print_failures(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                     std::size_t limit);
 
-// The JSON document described in harness/README.md (schema "tritri-check/2").
+// The JSON document described in harness/README.md (schema "tritri-check/2"). With groupings,
+// "families" and each tally's "family" name groups (grouping.hpp), and "group_by" lists them.
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                       const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs);
 

@@ -43,6 +43,19 @@ CheckResult with_failures_capped(const CheckResult& result, const std::vector<Ca
   return capped;
 }
 
+// --group-by SPEC (repeatable): each a grouping of the cases by their labels (grouping.hpp).
+std::vector<Grouping> groupings_of(const std::vector<std::string>& specs) {
+  std::vector<Grouping> out;
+  for (const std::string& spec : specs) {
+    try {
+      out.push_back(parse_grouping(spec));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--group-by: ") + e.what());
+    }
+  }
+  return out;
+}
+
 void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::size_t limit) {
   std::cout << title << ": " << rows.size() << '\n';
   std::size_t shown = 0;
@@ -59,14 +72,15 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
 }  // namespace
 
 int run_check(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures"},
+  Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures",
+                  "--group-by"},
                  kRunValuedOptions),
             with({"--quiet", "--confusion", "--float"}, kRunFlags));
   if (args.help()) {
     std::cout
         << "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
            "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
-           "                    [--float] [--json-max-failures N]\n"
+           "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
            "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
            "                    FILE...\n\n"
            "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
@@ -98,6 +112,13 @@ int run_check(int argc, char** argv) {
            "                       each pair is rounded to float inside the call and judged against\n"
            "                       the oracle on the double input); algorithms without one are left\n"
            "                       out. No baseline records these names.\n"
+           "  --group-by KEY[,KEY]...  tally per group of labels instead of per family (repeat for\n"
+           "                       several groupings; a case is counted once in each it is in):\n"
+           "                       the group is 'KEY=value KEY=value' from the case's labels, and\n"
+           "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
+           "                       the cases with that value; @base is the case's name up to its\n"
+           "                       last '.' (the base construction of a corpus variant). E.g.\n"
+           "                       --group-by variant=symmetry,@base --group-by variant,tilt\n"
         << kRunOptionsHelp
         << "\n"
            "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
@@ -114,12 +135,13 @@ int run_check(int argc, char** argv) {
   const auto baseline_files = args.values("--baseline");
   for (const auto& file : baseline_files)
     for (auto& row : read_baseline(file)) recorded.insert(row);
+  const auto groupings = groupings_of(args.values("--group-by"));
 
   const auto cases = load_cases(args.positional());
   Progress progress("labelling", cases.size());
   const auto oracle = label_cases(cases, progress.callback());
   progress.finish();
-  const CheckResult result = run_check(algorithms, cases, oracle, isolation_options(args));
+  const CheckResult result = run_check(algorithms, cases, oracle, isolation_options(args), groupings);
 
   print_check_table(std::cout, result);
   print_confusion(std::cout, result, args.flag("--confusion"));

@@ -15,7 +15,7 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 
-from tritri_report import analysis, derive, markdown, papers, report  # noqa: E402
+from tritri_report import analysis, groups, markdown, published, report  # noqa: E402
 
 FIXTURE = os.path.join(HERE, "fixture")
 
@@ -23,6 +23,16 @@ FIXTURE = os.path.join(HERE, "fixture")
 def load(name):
     with open(os.path.join(FIXTURE, name), encoding="utf-8") as f:
         return json.load(f)
+
+
+def load_published(folder):
+    with open(os.path.join(published.ALGORITHMS_DIR, folder, "published.json"), encoding="utf-8") as f:
+        return json.load(f)
+
+
+def labels(group):
+    """The labels a group of `tritri check --group-by` names: "variant=scale tilt=2^-3"."""
+    return dict(field.split("=", 1) for field in group.split())
 
 
 def section(text, heading):
@@ -150,11 +160,10 @@ class ReportFromFixture(unittest.TestCase):
         def tally(cases, fp=0, fn=0, confusion=None):
             return {"cases": cases, "false_positives": fp, "false_negatives": fn, "unsupported": 0,
                     "crashes": 0, "timeouts": 0, "confusion": confusion}
-        from tritri_report import data
-        self.assertFalse(data.group_is_asymmetric(tally(72)))
-        self.assertFalse(data.group_is_asymmetric(tally(72, fn=72)))
-        self.assertTrue(data.group_is_asymmetric(tally(72, fn=3)))
-        self.assertTrue(data.group_is_asymmetric(tally(72, confusion=[
+        self.assertFalse(groups.group_is_asymmetric(tally(72)))
+        self.assertFalse(groups.group_is_asymmetric(tally(72, fn=72)))
+        self.assertTrue(groups.group_is_asymmetric(tally(72, fn=3)))
+        self.assertTrue(groups.group_is_asymmetric(tally(72, confusion=[
             {"answer": "cross", "oracle": "touch-point", "count": 70},
             {"answer": "touch-point", "oracle": "touch-point", "count": 2}])))
 
@@ -206,8 +215,9 @@ class ReportFromFixture(unittest.TestCase):
         header, rows = tables[-1]
         for r in rows:
             for label, cell in zip(header[1:], r[1:]):
-                k = label.replace("2^", "")
-                ts = [t for t in sweeps["tallies"] if t["algorithm"] == r[0] and t["family"] == "tilt:" + k]
+                ts = [t for t in sweeps["tallies"] if t["algorithm"] == r[0] and
+                      labels(t["family"]).get("tilt") == label and
+                      labels(t["family"])["variant"] in ("symmetry", "scale", "translate")]
                 judged = sum(t["cases"] - t["unsupported"] for t in ts)
                 wrong = sum(t["false_positives"] + t["false_negatives"] + t["crashes"] + t["timeouts"]
                             for t in ts)
@@ -231,7 +241,7 @@ class ReportFromFixture(unittest.TestCase):
     def test_sabharwal_table_quotes_the_paper_and_the_bench(self):
         header, rows = tables_in(self.text, "Sabharwal & Leopold 2015, Table 1")[0]
         by_type = {r[0]: r for r in rows}
-        for k, seconds in papers.SABHARWAL_TABLE1.items():
+        for k, seconds in load_published("sabharwal15")["table1"]["seconds_per_pair"].items():
             self.assertEqual(by_type[k][1], "%.3f ms" % (1000 * seconds))
             e = [x for x in self.bench["tritri"]["results"]
                  if x["algorithm"] == "sabharwal15" and x["workload"] == "type:" + k and x["level"] == "relation"]
@@ -242,9 +252,10 @@ class ReportFromFixture(unittest.TestCase):
         chk = load("check-yuhe13.json")
         tables = tables_in(self.text, "Yu & He 2013, Table 1 and the singular suite")
         header, rows = tables[1]
+        group = {st["name"]: st["group"] for st in load_published("yuhe13")["suite"]["sets"]}
+        self.assertEqual(sorted(group.values()), sorted(chk["families"]))
         for r in rows:
-            fam = "yuhe13-" + r[1]
-            t = [x for x in chk["tallies"] if x["algorithm"] == r[0] and x["family"] == fam][0]
+            t = [x for x in chk["tallies"] if x["algorithm"] == r[0] and x["family"] == group[r[1]]][0]
             self.assertEqual(int(r[3]), t["cases"])
             self.assertEqual(int(r[4]), t["false_positives"] + t["false_negatives"])
         published = tables[0][1][:2]
@@ -336,38 +347,97 @@ class Stages(unittest.TestCase):
         self.assertEqual(data.primary_levels(bench), {"yuhe13": "relation"})
 
 
-class Derive(unittest.TestCase):
-    def test_groups_of_a_case(self):
-        labels = [("family", "near-coplanar"), ("tilt", "2^-20"), ("variant", "scale"), ("transform", "2^-7")]
-        self.assertEqual(derive.sweep_groups("near-coplanar.through.0.scale-2^-7", labels),
-                         [("scale", "-7"), ("tilt", "-20")])
-        labels = [("family", "shared-edge"), ("variant", "perturb"), ("transform", "+1e-8")]
-        self.assertEqual(derive.sweep_groups("x", labels), [("perturb", "+1e-8")])
-        labels = [("family", "shared-edge"), ("variant", "symmetry"), ("transform", "sym-012-012-ab")]
-        self.assertEqual(derive.sweep_groups("x", labels), [("exact", "identity")])
+class Groups(unittest.TestCase):
+    def test_the_sweep_a_group_counts_for(self):
+        self.assertEqual(groups.sweep_of("variant=scale transform=2^-7"), ("scale", "-7"))
+        self.assertEqual(groups.sweep_of("variant=scale tilt=2^-20"), ("tilt", "-20"))
+        self.assertEqual(groups.sweep_of("variant=translate transform=2^12*(0,-1,1)"), ("translate", "12"))
+        self.assertEqual(groups.sweep_of("variant=perturb transform=+1e-8"), ("perturb", "+1e-8"))
+        self.assertEqual(groups.sweep_of("variant=symmetry transform=sym-012-012-ab"), ("exact", "identity"))
+        self.assertEqual(groups.sweep_of("variant=symmetry offset=2^-40"), ("plane-offset", "-40"))
+        self.assertIsNone(groups.sweep_of("variant=symmetry transform=sym-021-012-ba"))
+        self.assertIsNone(groups.sweep_of("variant=rotate tilt=2^-20"))  # rotation moved the vertices
 
-    def test_derived_files_regroup_every_symmetric_variant(self):
-        corpus = tempfile.mkdtemp()
+    def test_every_labelled_sweep_is_asked_for(self):
+        asked = groups.sweep_groupings()
+        for sweep, (_, _, _, label) in analysis.SWEEPS.items():
+            if label:
+                self.assertIn("variant," + label, asked, sweep)
+
+    def test_base_cases_of_the_symmetry_check(self):
+        sym = load("check-symmetry.json")
+        self.assertTrue(all(labels(f)["variant"] == "symmetry" for f in sym["families"]))
+        per = groups.variants_per_base(sym)
+        self.assertEqual(sum(per.values()), len(sym["families"]))
+        self.assertEqual(groups.base_family("variant=symmetry @base=near-coplanar.through.0"), "near-coplanar")
+
+
+class Published(unittest.TestCase):
+    def test_every_published_file_cites_its_paper(self):
+        folders = [n for n in sorted(os.listdir(published.ALGORITHMS_DIR))
+                   if os.path.exists(os.path.join(published.ALGORITHMS_DIR, n, "published.json"))]
+        self.assertGreaterEqual(len(folders), 6)
+        for folder in folders:
+            doc = load_published(folder)
+            self.assertTrue(doc["paper"] and doc["source"], folder)
+
+    def test_the_report_finds_them_by_the_checks_folders(self):
+        run = report.Run(FIXTURE)
+        folders = {a["folder"] for a in load("check.json")["algorithms"]}
+        self.assertEqual(set(run.published) - folders, set())
+        self.assertIn("moller97", run.published)
+
+
+class Reference(unittest.TestCase):
+    def test_the_bench_files_reference_and_ratios_are_read(self):
+        """A bench file that names its reference (here held97) and gives relative_to_reference."""
+        src, out = tempfile.mkdtemp(), tempfile.mkdtemp()
+        try:
+            shutil.copy(os.path.join(FIXTURE, "check.json"), src)
+            bench = load("bench.json")
+            results = bench["tritri"]["results"]
+            ref = {r["workload"]: r["ns_per_pair_median"] for r in results
+                   if r["algorithm"] == "held97" and r["level"] == "overlap"}
+            for r in results:
+                r.pop("relative_to_moller97", None)
+                r["relative_to_reference"] = r["ns_per_pair_median"] / ref[r["workload"]]
+            bench["tritri"]["reference"] = "held97"
+            with open(os.path.join(src, "bench.json"), "w", encoding="utf-8") as f:
+                json.dump(bench, f)
+            report.build_report(src, out)
+            with open(os.path.join(out, "README.md"), encoding="utf-8") as f:
+                text = f.read()
+            (header, rows), = tables_in(text, "Summary")
+            self.assertEqual(header[-1], "× held97")
+            level = {r["algorithm"]: r["level"] for r in results if r["workload"] == "ratio:0.50"
+                     and r["level"] in ("overlap", "relation")}
+            for row in rows:
+                e = [r for r in results if r["algorithm"] == row[0] and r["workload"] == "ratio:0.50"
+                     and r["level"] == level[row[0]]][0]
+                self.assertEqual(row[-1], markdown.ratio(e["relative_to_reference"]), row[0])
+            self.assertIn("Every crossing with held97", text)
+        finally:
+            shutil.rmtree(src)
+            shutil.rmtree(out)
+
+    def test_old_bench_files_fall_back_to_moller97(self):
+        from tritri_report import data
+        self.assertEqual(data.reference({"tritri": {}}), "moller97")
+        self.assertEqual(data.relative_to_reference({"relative_to_moller97": 1.5}), 1.5)
+        self.assertEqual(data.relative_to_reference({"relative_to_reference": 2.0}), 2.0)
+
+
+class Sections(unittest.TestCase):
+    def test_a_section_is_a_title_and_a_render_function(self):
+        import types
+        extra = types.SimpleNamespace(TITLE="Extra", render=lambda run, part: part.add("hello\n"))
+        sub = types.SimpleNamespace(TITLE="Detail", LEVEL=3, render=lambda run, part: part.heading("More"))
         out = tempfile.mkdtemp()
         try:
-            coords = " ".join(["0"] * 18)
-            with open(os.path.join(corpus, "shared-edge.cases"), "w") as f:
-                for t in ("sym-012-012-ab", "sym-021-012-ba"):
-                    f.write("shared-edge.hinge.0.%s %s family=shared-edge variant=symmetry transform=%s\n"
-                            % (t, coords, t))
-                f.write("shared-edge.hinge.0.scale-2^3 %s family=shared-edge variant=scale transform=2^3\n"
-                        % coords)
-            derive.write_derived(corpus, corpus, out)
-            with open(os.path.join(out, "symmetry.cases")) as f:
-                sym = [derive.parse_case_line(x) for x in f]
-            sym = [x for x in sym if x]
-            self.assertEqual(len(sym), 2)
-            self.assertTrue(all(dict(x[2])["family"] == "sym:shared-edge.hinge.0" for x in sym))
-            with open(os.path.join(out, "sweeps.cases")) as f:
-                names = [derive.parse_case_line(x)[0] for x in f if derive.parse_case_line(x)]
-            self.assertEqual(names, ["exact~shared-edge.hinge.0.sym-012-012-ab", "scale~shared-edge.hinge.0.scale-2^3"])
+            r = report.Report(report.Run(FIXTURE), out)
+            text = r.build([extra, sub])
+            self.assertEqual(text, "## 1 Extra\n\nhello\n\n### 1.1 Detail\n\n### 1.2 More\n")
         finally:
-            shutil.rmtree(corpus)
             shutil.rmtree(out)
 
 

@@ -73,16 +73,18 @@ def envelope_changes(series):
 # ---- sweeps ----
 
 SWEEPS = OrderedDict([
-    # name: (title, x label, how values read)
-    ("tilt", ("near-coplanar: T2 tilted off T1's plane", "tilt (slope 2^k)", "pow2")),
-    ("scale", ("scaling by 2^k (exact: the answer cannot change)", "scale factor 2^k", "pow2-binned")),
-    ("translate", ("translation by 2^k offsets (exact: the answer cannot change)", "offset 2^k", "pow2-binned")),
+    # name: (title, x label, how values read, the construction label swept or None when the
+    # sweep is a transformation of the corpus: groups.sweep_of)
+    ("tilt", ("near-coplanar: T2 tilted off T1's plane", "tilt (slope 2^k)", "pow2", "tilt")),
+    ("scale", ("scaling by 2^k (exact: the answer cannot change)", "scale factor 2^k", "pow2-binned", None)),
+    ("translate", ("translation by 2^k offsets (exact: the answer cannot change)", "offset 2^k", "pow2-binned",
+                   None)),
     ("perturb", ("one vertex moved by ±δ × the pair's size (the oracle judges the moved pair)",
-                 "perturbation δ (both signs pooled)", "magnitude")),
-    ("plane-offset", ("parallel planes: distance between them", "plane offset 2^k", "pow2-binned")),
-    ("gap", ("coplanar-disjoint: gap between the triangles", "gap 2^k", "pow2-binned")),
-    ("aspect", ("slivers: aspect ratio", "aspect ratio 2^k", "pow2")),
-    ("size-ratio", ("tiny-vs-huge: size ratio", "size ratio 2^k", "pow2-binned")),
+                 "perturbation δ (both signs pooled)", "magnitude", None)),
+    ("plane-offset", ("parallel planes: distance between them", "plane offset 2^k", "pow2-binned", "offset")),
+    ("gap", ("coplanar-disjoint: gap between the triangles", "gap 2^k", "pow2-binned", "gap")),
+    ("aspect", ("slivers: aspect ratio", "aspect ratio 2^k", "pow2", "aspect")),
+    ("size-ratio", ("tiny-vs-huge: size ratio", "size ratio 2^k", "pow2-binned", "ratio")),
 ])
 BIN_WIDTH = 10  # exponents per bin where a sweep draws k at random over a wide range
 
@@ -93,7 +95,7 @@ def sweep_bins(sweep, series):
     A binned sweep is labelled by the exponents actually present in each bin, and drawn at
     their mean, so a bin holding only k = 40 says so.
     """
-    kind = SWEEPS.get(sweep, ("", "", "raw"))[2]
+    kind = SWEEPS.get(sweep, ("", "", "raw", None))[2]
     bins = OrderedDict()
     for value, tot in series:
         if kind in ("pow2", "pow2-binned"):

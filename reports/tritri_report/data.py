@@ -20,23 +20,33 @@ FILES = {
     "sweeps": "check-sweeps.json",
     "sweeps_float": "check-sweeps-float.json",
     "builtin": "check-builtin.json",
-    "yuhe13": "check-yuhe13.json",
-    "sabharwal15": "check-sabharwal15.json",
     "bench": "bench.json",
 }
+# The named suites' checks (check-yuhe13.json, ...) are named by the papers' published files.
 
-# Algorithms that are not tests: timing floors.
-FLOORS = {"null", "floor"}
 SINGULAR_EXCLUDED = {"random"}  # the one generic family; all others are singular or near it
+
+# `tritri bench` times its own floor under this name beside the registered `null` algorithm
+# (harness/bench); the tables show the registered one only.
+HARNESS_FLOOR = "floor"
+# The reference of bench files written before `tritri bench` named its reference.
+OLD_REFERENCE = "moller97"
+
+
+def load_json(path):
+    """The document at `path`, or None when there is no such file."""
+    if not os.path.exists(path):
+        return None
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)
 
 
 def load_results(results_dir):
     data = {}
     for role, name in FILES.items():
-        path = os.path.join(results_dir, name)
-        if os.path.exists(path):
-            with open(path, encoding="utf-8") as f:
-                data[role] = json.load(f)
+        doc = load_json(os.path.join(results_dir, name))
+        if doc is not None:
+            data[role] = doc
     return data
 
 
@@ -101,8 +111,8 @@ class Totals:
         return self.misclassified / self.scored
 
 
-def algorithm_names(check):
-    return [a["name"] for a in check.get("algorithms", []) if a["name"] not in FLOORS]
+def algorithm_names(check, floors=()):
+    return [a["name"] for a in check.get("algorithms", []) if a["name"] not in floors]
 
 
 def algorithm_info(check):
@@ -131,81 +141,30 @@ def singular_families(check):
     return [f for f in check.get("families", []) if f not in SINGULAR_EXCLUDED]
 
 
-# ---- asymmetry (check-symmetry.json: one group per base case, family "sym:<base>") ----
-
-def group_is_asymmetric(t):
-    """The answers to the variants of one base case are not all the same.
-
-    The oracle's answer is the same for every variant (the transformations are exact), so a
-    group's overlap answers differ exactly when some but not all scored variants are wrong;
-    relations differ when the confusion cells name more than one answer.
-    """
-    cases = _int(t.get("cases"))
-    lost = _int(t.get("crashes")) + _int(t.get("timeouts"))
-    scored = cases - _int(t.get("unsupported")) - lost
-    wrong = _int(t.get("false_positives")) + _int(t.get("false_negatives"))
-    if 0 < lost < cases - _int(t.get("unsupported")):
-        return True
-    if 0 < wrong < scored:
-        return True
-    confusion = t.get("confusion")
-    if confusion:
-        answers = {c["answer"] for c in confusion if c.get("count", 0) > 0}
-        if len(answers) > 1:
-            return True
-    return False
-
-
-def base_family(group):
-    """sym:near-coplanar.through.0 -> near-coplanar"""
-    base = group.split(":", 1)[1] if ":" in group else group
-    return base.split(".", 1)[0]
-
-
-def asymmetry(symmetry_check):
-    """{algorithm: {family: [asymmetric base cases, base cases, variants in them]}}"""
-    out = OrderedDict()
-    for t in symmetry_check.get("tallies", []):
-        a = t["algorithm"]
-        if a in FLOORS:
-            continue
-        fam = base_family(t["family"])
-        row = out.setdefault(a, OrderedDict()).setdefault(fam, [0, 0, 0])
-        row[1] += 1
-        row[2] += _int(t.get("cases"))
-        if group_is_asymmetric(t):
-            row[0] += 1
-    return out
-
-
-# ---- sweeps (check-sweeps.json: families "sweep:value") ----
-
-def sweep_series(sweeps_check, sweep, algorithm):
-    """[(value string, Totals)] for one sweep, in the check's order of first appearance."""
-    out = OrderedDict()
-    for t in sweeps_check.get("tallies", []):
-        if t["algorithm"] != algorithm:
-            continue
-        name, _, value = t["family"].partition(":")
-        if name != sweep:
-            continue
-        out.setdefault(value, Totals()).add(t)
-    return list(out.items())
-
-
-def sweep_names(sweeps_check):
-    names = []
-    for f in sweeps_check.get("families", []):
-        n = f.partition(":")[0]
-        if n not in names:
-            names.append(n)
-    return names
-
-
 # ---- bench ----
 
 def bench_results(bench):
     return (bench or {}).get("tritri", {}).get("results", [])
+
+
+def floors(bench):
+    """The timing floors `tritri bench` measured (its own and the `null` algorithm): not tests."""
+    return set((bench or {}).get("tritri", {}).get("harness", {}).get("floor_share_of_fastest") or {})
+
+
+def reference(bench):
+    """The algorithm every bench time is also given relative to."""
+    b = bench or {}
+    return b.get("tritri", {}).get("reference") or b.get("context", {}).get("reference") or OLD_REFERENCE
+
+
+def relative_to_reference(entry):
+    """A bench result's time over the reference's on the same pool, as `tritri bench` wrote it."""
+    if not entry:
+        return None
+    if "relative_to_reference" in entry:
+        return entry["relative_to_reference"]
+    return entry.get("relative_to_" + OLD_REFERENCE)
 
 
 def bench_median(bench, algorithm, level, workload):

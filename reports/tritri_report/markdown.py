@@ -1,6 +1,7 @@
 """Markdown tables and number formats, kept in one place so the tests can parse them back."""
 
 import math
+import re
 
 NOT_MEASURED = "not measured in this run"
 
@@ -89,3 +90,8 @@ def ns(x):
 
 def ratio(x):
     return "-" if x is None else "%.2f" % x
+
+
+def anchor(heading):
+    """GitHub's anchor of a heading: "5 The papers' tables" -> "5-the-papers-tables"."""
+    return re.sub(r"[^a-z0-9 -]", "", heading.lower()).replace(" ", "-")

@@ -1,0 +1,34 @@
+"""The report's sections, in order: the one list to change to add, drop or move one.
+
+A section is a module with
+  TITLE      its heading (or a function of the Run giving it);
+  LEVEL      2 (a part, the default) or 3 (a subsection of the part before it); 1 for the title;
+  NUMBERED   False for a heading without a number (default True: parts are numbered in order,
+             a numbered subsection continues its part's numbering);
+  render(run, part)  reads the Run (report.Run: the JSON, the published files) and adds its
+             Markdown and figures to the Part (report.Part: add, heading, figure).
+The report writes each heading, then calls render.
+"""
+
+from . import (asymmetry, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
+               sabharwal15, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
+
+SECTIONS = [
+    header,
+    summary,
+    correctness,
+    asymmetry,
+    baseline,
+    speed_error,
+    time_ratio,
+    stability,
+    float_double,
+    papers,
+    moller97,
+    tropp06,
+    sabharwal15,
+    yuhe13,
+    unquoted,
+    gallery,
+    provenance,
+]
