@@ -6,7 +6,12 @@
 // in batches of kBatch pairs through the algorithm's batch entry point (one indirect call per
 // batch, none per pair, no allocation in the timed loop); every answer is folded into a checksum
 // that goes through benchmark::DoNotOptimize once per batch. Time per pair comes from items
-// processed (one item = one pair) and from the `per_pair` counter.
+// processed (one item = one pair) and from the `per_pair` counter. Every time is also given
+// relative to the reference algorithm's on the same pool, in the same run.
+//
+// The pieces: workload.hpp and workloads/ (the pools), entries.cpp (checking and counting before
+// timing), timing.cpp (Google Benchmark), tables.cpp, summary.cpp, json_output.cpp, context.cpp
+// (report.hpp), and run() in bench.cpp, which puts them together.
 #pragma once
 
 #include "harness/bench/pools.hpp"
@@ -27,9 +32,13 @@ inline constexpr std::size_t kBatch = 256;
 struct Options {
   std::vector<const Algorithm*> algorithms;  // empty: every registered algorithm
   std::vector<Level> levels;                 // empty: every level
-  // "ratio", "ratio:0.30", "type", "type:point", "family", "family:NAME", "stage"; empty: ratio,
-  // type, family and stage (when an algorithm has stages).
+  // "ratio", "ratio:0.30", "type", "type:point", "family", "family:NAME", "stage", "size",
+  // "size:4096" (workload.hpp lists them); empty: every workload of the default set (ratio, type,
+  // family and stage when an algorithm has stages; not size).
   std::vector<std::string> workloads;
+  // Every time is also given relative to this algorithm's overlap level (or its first answered
+  // level) on the same pool; it is always timed.
+  std::string reference = "moller97";
   std::size_t pool_size = kDefaultPoolSize;
   std::uint64_t seed = kDefaultSeed;
   int repetitions = 9;
@@ -54,12 +63,14 @@ struct Options {
 Options quick_options();
 
 // Builds the pools, checks every algorithm on them, registers and runs the benchmarks, prints
-// the tables to `out` and writes the JSON. Returns 0, or 1 when a benchmark failed.
+// the tables to `out` and writes the JSON. Returns 0, or 1 when a benchmark failed. Throws
+// std::invalid_argument on an unknown workload or reference.
 int run(const Options& options, std::ostream& out);
 
 // ---- pieces, exposed for the tests ----
 
-// Wrong answers of one level on a pool (per the oracle), and the cases the algorithm declined.
+// Wrong answers of one level on a pool (per the judge, harness/check/judge.hpp), and the cases the
+// algorithm declined.
 struct Score {
   std::size_t wrong = 0;
   std::size_t unsupported = 0;

@@ -1,8 +1,13 @@
-// Tests of `tritri bench`: the pools are what they claim, the counting scalar counts, and the
-// command runs end to end and writes Google Benchmark's JSON with tritri's context keys.
+// Tests of `tritri bench`: the pools are what they claim, the workload registry parses and
+// builds what it is asked for, the counting scalar counts, and the command runs end to end and
+// writes Google Benchmark's JSON with tritri's context keys and the reference's ratios.
 // No test here asserts anything about time: speed claims come from the benchmark only.
 #include "harness/bench/bench.hpp"
 #include "harness/bench/pools.hpp"
+#include "harness/bench/workload.hpp"
+#include "harness/bench/workloads/family.hpp"
+#include "harness/bench/workloads/ratio.hpp"
+#include "harness/bench/workloads/type.hpp"
 #include "algorithms/moller97/moller97.hpp"
 
 #include <gtest/gtest.h>
@@ -12,9 +17,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
+#include <sys/wait.h>
 
 namespace tritri::bench {
 namespace {
@@ -180,6 +187,151 @@ TrianglePair mirrored(const TrianglePair& p) {
 }
 double first_coordinate(const TrianglePair& p) { return p.t1[0][0] + p.t2[2][2]; }
 
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+WorkloadInput input_of(std::size_t size, std::uint64_t seed) {
+  WorkloadInput input;
+  input.pool = {size, seed};
+  return input;
+}
+
+std::vector<std::string> values_of(const std::string& spec) { return select_workloads({spec}, {}).at(0).values; }
+
+TEST(BenchWorkloads, AnUnknownWorkloadIsAClearErrorListingTheKnownOnes) {
+  for (const char* kind : {"ratio", "type", "family", "stage", "size"}) EXPECT_NE(find_workload(kind), nullptr) << kind;
+  const std::string e = error_of([] { select_workloads({"sizes:4096"}, {}); });
+  EXPECT_NE(e.find("unknown workload 'sizes:4096'"), std::string::npos) << e;
+  for (const char* usage : {"ratio[:R]", "type[:T]", "family[:F]", "stage", "size[:N]"})
+    EXPECT_NE(e.find(usage), std::string::npos) << e;
+}
+
+TEST(BenchWorkloads, ValuesAreCanonicalAndBadOnesAreRefused) {
+  EXPECT_EQ(values_of("ratio:0.5"), std::vector<std::string>{"0.50"});
+  EXPECT_EQ(values_of("ratio").size(), 11u);
+  EXPECT_EQ(values_of("type:point"), std::vector<std::string>{"point"});
+  EXPECT_EQ(values_of("type").size(), 4u);
+  EXPECT_EQ(values_of("size"), (std::vector<std::string>{"4096", "16384", "65536", "262144", "1048576"}));
+  EXPECT_EQ(values_of("size:4096"), std::vector<std::string>{"4096"});
+  EXPECT_EQ(select_workloads({"ratio:0.5", "ratio:0.50", "ratio:0.1"}, {}).at(0).values,
+            (std::vector<std::string>{"0.50", "0.10"}));
+  for (const char* bad : {"ratio:1.5", "ratio:x", "ratio:", "type:volume", "size:0", "size:-3", "size:4k",
+                          "stage:transform", "family:"})
+    EXPECT_FALSE(error_of([&] { select_workloads({bad}, {}); }).empty()) << bad;
+}
+
+TEST(BenchWorkloads, SizeBuildsTheHalfIntersectingRatioPoolOfThatSize) {
+  const Planned planned = build_pools(select_workloads({"size:4096"}, {}), input_of(512, 5));
+  ASSERT_EQ(planned.pools.size(), 1u);
+  const Pool& p = planned.pools[0].pool;
+  EXPECT_EQ(p.name(), "size:4096");
+  EXPECT_EQ(p.size(), 4096u);  // --pool (512 here) does not apply to it
+  EXPECT_EQ(p.intersecting(), 2048u);
+  EXPECT_EQ(distinct_pairs(p).size(), p.size());
+  for (std::size_t i = 0; i < p.size(); i += 16) EXPECT_EQ(oracle_label(p.pairs[i]).overlap, p.truth[i].overlap);
+  EXPECT_TRUE(planned.pools[0].levels);
+  EXPECT_FALSE(planned.pools[0].stages);
+}
+
+TEST(BenchWorkloads, SmallerSizesAreDrawnFromTheSameCandidatesAsLargerOnes) {
+  const Planned planned = build_pools(select_workloads({"size:1000", "size:300"}, {}), input_of(64, 5));
+  ASSERT_EQ(planned.pools.size(), 2u);
+  const Pool& small = planned.pools[0].pool;
+  const Pool& large = planned.pools[1].pool;
+  EXPECT_EQ(small.name(), "size:300");
+  EXPECT_EQ(large.name(), "size:1000");
+  const auto in_large = distinct_pairs(large);
+  for (const auto& bytes : distinct_pairs(small)) EXPECT_TRUE(in_large.count(bytes));
+}
+
+TEST(BenchWorkloads, StageIsTimedOnTheRatioPoolOfTheSameName) {
+  Planned planned = build_pools(select_workloads({"ratio:0.3", "stage", "ratio:0.5"}, {}), input_of(256, 9));
+  ASSERT_EQ(planned.pools.size(), 2u);
+  EXPECT_EQ(planned.pools[0].pool.name(), "ratio:0.30");
+  EXPECT_TRUE(planned.pools[0].levels);
+  EXPECT_FALSE(planned.pools[0].stages);
+  EXPECT_EQ(planned.pools[1].pool.name(), "ratio:0.50");
+  EXPECT_TRUE(planned.pools[1].levels);
+  EXPECT_TRUE(planned.pools[1].stages);
+  planned = build_pools(select_workloads({"stage"}, {}), input_of(256, 9));
+  ASSERT_EQ(planned.pools.size(), 1u);
+  EXPECT_EQ(planned.pools[0].pool.name(), "ratio:0.50");
+  EXPECT_FALSE(planned.pools[0].levels);  // built for the stages only
+  EXPECT_TRUE(planned.pools[0].stages);
+}
+
+TEST(BenchWorkloads, TheDefaultSetLeavesOutSizeAndHasStageOnlyWithStages) {
+  auto kinds = [](const std::vector<const Algorithm*>& algorithms) {
+    std::vector<std::string> k;
+    for (const Selected& s : select_workloads({}, algorithms)) k.push_back(s.workload->kind());
+    return k;
+  };
+  Algorithm plain;
+  plain.name = "plain";
+  Algorithm staged = plain;
+  staged.stages = {{"read", stage_run<&first_coordinate>, nullptr}};
+  EXPECT_EQ(kinds({&plain}), (std::vector<std::string>{"ratio", "type", "family"}));
+  EXPECT_EQ(kinds({&plain, &staged}), (std::vector<std::string>{"ratio", "type", "family", "stage"}));
+}
+
+// A small real run on ratio:0.50, timing moller97 and guigue03.
+Options tiny_run(const std::filesystem::path& json) {
+  Options o = quick_options();
+  o.algorithms = {registry().find("moller97"), registry().find("guigue03")};
+  o.levels = {Level::overlap};
+  o.workloads = {"ratio:0.5"};
+  o.pool_size = 512;
+  o.repetitions = 2;
+  o.min_time = 0.001;
+  o.count_operations = false;
+  o.json_path = json.string();
+  return o;
+}
+
+TEST(BenchReference, TimesAreRelativeToTheNamedAlgorithmUnderOneKey) {
+  const auto path = std::filesystem::temp_directory_path() / "tritri-bench-reference-test.json";
+  Options o = tiny_run(path);
+  o.reference = "guigue03";
+  std::ostringstream out;
+  ASSERT_EQ(run(o, out), 0) << out.str();
+  EXPECT_NE(out.str().find("relative to guigue03/overlap"), std::string::npos) << out.str();
+  std::ifstream in(path);
+  const auto doc = nlohmann::json::parse(in);
+  EXPECT_EQ(doc["tritri"]["reference"], "guigue03");
+  EXPECT_EQ(doc["tritri"]["reference_level"], "overlap");
+  EXPECT_EQ(doc["context"]["reference"], "guigue03");
+  std::map<std::string, double> median, relative;
+  for (const auto& r : doc["tritri"]["results"]) {
+    EXPECT_FALSE(r.contains("relative_to_moller97"));
+    ASSERT_TRUE(r.contains("relative_to_reference")) << r.dump();
+    median[r["name"]] = r["ns_per_pair_median"];
+    relative[r["name"]] = r["relative_to_reference"];
+  }
+  EXPECT_DOUBLE_EQ(relative.at("guigue03/overlap/ratio:0.50"), 1.0);
+  EXPECT_DOUBLE_EQ(relative.at("moller97/overlap/ratio:0.50"),
+                   median.at("moller97/overlap/ratio:0.50") / median.at("guigue03/overlap/ratio:0.50"));
+  std::filesystem::remove(path);
+}
+
+TEST(BenchReference, AnUnknownReferenceIsAUsageError) {
+  Options o = tiny_run("");
+  o.reference = "nosuch";
+  std::ostringstream out;
+  const std::string e = error_of([&] { run(o, out); });
+  EXPECT_NE(e.find("unknown reference algorithm 'nosuch'"), std::string::npos) << e;
+  EXPECT_NE(e.find("moller97"), std::string::npos) << e;  // the known ones are listed
+  const std::string command = std::string(TRITRI_BINARY_DIR) + "/bin/tritri bench --reference nosuch --list > /dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+}
+
 TEST(BenchRun, StageHooksAreTimedAndWritten) {
   Algorithm a;
   a.name = "stagetest";
@@ -247,8 +399,9 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
   // Every registered algorithm on every level it answers.
   for (const auto& a : registry().all())
     for (Level level : {Level::overlap, Level::relation, Level::segment})
-      if (a.answers(level))
+      if (a.answers(level)) {
         EXPECT_TRUE(names.count(a.name + "/" + std::string(to_string(level)) + "/ratio:0.50")) << a.name;
+      }
 
   ASSERT_TRUE(doc.contains("tritri"));
   std::map<std::string, int> pools_of;
@@ -263,9 +416,11 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
   for (const auto& r : doc["tritri"]["results"])
     if (r["name"] == "moller97/overlap/ratio:0.50") {
       moller_ops = r.contains("ops_per_pair");
-      EXPECT_DOUBLE_EQ(r["relative_to_moller97"].get<double>(), 1.0);
+      EXPECT_DOUBLE_EQ(r["relative_to_reference"].get<double>(), 1.0);
     }
   EXPECT_TRUE(moller_ops);
+  EXPECT_EQ(doc["tritri"]["reference"], "moller97");
+  EXPECT_EQ(context["reference"], "moller97");
   std::filesystem::remove_all(dir);
 }
 

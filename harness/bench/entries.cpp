@@ -1,0 +1,187 @@
+#include "harness/bench/entry.hpp"
+
+#include "harness/check/judge.hpp"
+#include "harness/run/process_plugin.hpp"
+
+#include <algorithm>
+#include <ostream>
+#include <stdexcept>
+
+namespace tritri::bench {
+namespace {
+
+template <class Answer, class Judge>
+Score score_with(const Pool& pool, const std::vector<Answer>& answers, Judge judge) {
+  Score s;
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    const Verdict v = judge(answers[i], pool.truth[i]);
+    s.wrong += v == Verdict::wrong;
+    s.unsupported += v == Verdict::unsupported;
+  }
+  return s;
+}
+
+// The score of each level's answer type, for code generic over the level.
+Score score_answers(const Pool& pool, const std::vector<Overlap>& a) { return score_overlap(pool, a); }
+Score score_answers(const Pool& pool, const std::vector<RelationAnswer>& a) { return score_relation(pool, a); }
+Score score_answers(const Pool& pool, const std::vector<SegmentAnswer>& a) { return score_segment(pool, a); }
+
+// Runs one level of the algorithm over the pool in a child process (isolation.hpp), so that a
+// crash or a hang costs that entry, not the run.
+template <class Answer, class Batch>
+std::vector<Answer> answers_isolated(Batch batch, const Pool& pool, const IsolationOptions& isolation,
+                                     std::vector<Fault>& faults) {
+  const std::size_t n = pool.size();
+  SharedArray<Answer> shared(n);
+  faults = run_isolated(n, [&](std::size_t b, std::size_t e) { batch(pool.pairs.data() + b, e - b, shared.data() + b); },
+                        isolation);
+  return std::vector<Answer>(shared.data(), shared.data() + n);
+}
+
+Score score_entry(const Algorithm& a, Level level, const Pool& pool, const IsolationOptions& isolation,
+                  std::vector<Fault>& faults) {
+  Score score;
+  for_each_level([&](auto l) {
+    constexpr Level L = decltype(l)::value;
+    if (L == level) score = score_answers(pool, answers_isolated<AnswerOf<L>>(a.batch<L>(), pool, isolation, faults));
+  });
+  return score;
+}
+
+std::unique_ptr<Entry> new_entry(const Algorithm* a, std::string level, const Pool& pool) {
+  auto e = std::make_unique<Entry>();
+  e->algo = a->name;
+  e->level = std::move(level);
+  e->algorithm = a;
+  e->pool = &pool;
+  return e;
+}
+
+// A process plug-in answers over a pipe: its time would be the pipe's. It is checked on every
+// pool like the others, and reported, not timed.
+void process_entries(const Algorithm* a, const Pool& pool, const std::vector<Level>& levels, Entries& entries) {
+  std::vector<std::string> names(pool.size());
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = "pair-" + std::to_string(i);
+  const ProcessAnswers got = run_process_plugin({a->process.command, a->process.timeout_seconds}, names, pool.pairs);
+  for (Level level : levels) {
+    if (level == Level::segment || !a->answers(level)) continue;
+    auto e = new_entry(a, std::string(to_string(level)), pool);
+    e->answer_level = level;
+    e->score = level == Level::overlap ? score_overlap(pool, got.overlap) : score_relation(pool, got.relation);
+    e->faults = got.faults;
+    e->not_timed = "a process plug-in: its answers cross a pipe, so it is checked, not timed";
+    entries.untimed.push_back(std::move(e));
+  }
+}
+
+void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, const std::vector<Level>& levels,
+                   const Options& options, Entries& entries) {
+  for (Level level : levels) {
+    if (!a->answers(level)) continue;
+    auto e = new_entry(a, std::string(to_string(level)), pool);
+    e->answer_level = level;
+    e->floor = lineup.is_floor(a);
+    e->score = score_entry(*a, level, pool, options.isolation, e->faults);
+    if (!e->faults.empty()) {
+      entries.untimed.push_back(std::move(e));
+      continue;
+    }
+    if (options.count_operations) e->ops = count_operations(*a, level, pool);
+    entries.timed.push_back(std::move(e));
+  }
+}
+
+void stage_entries(const Algorithm* a, const Pool& pool, Entries& entries) {
+  for (const StageEntry& s : a->stages) {
+    if (!s.run) throw std::logic_error(a->name + ": stage '" + s.name + "' has no run function");
+    auto e = new_entry(a, "stage:" + s.name, pool);
+    e->stage = &s;
+    if (s.prepare) {
+      e->prepared.resize(pool.size());
+      s.prepare(pool.pairs.data(), pool.size(), e->prepared.data());
+    }
+    entries.timed.push_back(std::move(e));
+  }
+}
+
+// Runs one counting batch over the pool from zeroed counts; false when the level has none.
+template <class Answer, class Batch>
+bool run_counted(Batch batch, const Pool& pool, OpCounts& counts) {
+  if (!batch) return false;
+  std::vector<Answer> out(pool.size());
+  counts = {};
+  batch(pool.pairs.data(), pool.size(), out.data());
+  return true;
+}
+
+}  // namespace
+
+Score score_overlap(const Pool& pool, const std::vector<Overlap>& answers) {
+  return score_with(pool, answers, [](Overlap a, const Truth& t) { return judge_overlap(a, t); });
+}
+
+Score score_relation(const Pool& pool, const std::vector<RelationAnswer>& answers) {
+  return score_with(pool, answers, [](const RelationAnswer& a, const Truth& t) { return judge_relation(a, t).verdict; });
+}
+
+Score score_segment(const Pool& pool, const std::vector<SegmentAnswer>& answers) {
+  return score_with(pool, answers,
+                    [](const SegmentAnswer& a, const Truth& t) { return judge_overlap(implied_overlap(a), t); });
+}
+
+std::optional<OpCounts> count_operations(const Algorithm& a, Level level, const Pool& pool) {
+  OpCounts& counts = op_counts();
+  const OpCounts before = counts;
+  bool ran = false;
+  for_each_level([&](auto l) {
+    constexpr Level L = decltype(l)::value;
+    if (L == level) ran = run_counted<AnswerOf<L>>(a.batch<L>(Scalar::counted), pool, counts);
+  });
+  if (!ran) return std::nullopt;
+  const OpCounts total = counts;
+  counts = before;
+  return total;
+}
+
+bool Lineup::is_floor(const Algorithm* a) const { return std::find(floors.begin(), floors.end(), a) != floors.end(); }
+
+std::string Lineup::reference_row() const { return reference->name + "/" + std::string(to_string(reference_level)); }
+
+Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup, const std::vector<Level>& levels,
+                     const Options& options) {
+  Entries entries;
+  for (const PlannedPool& planned : pools) {
+    for (const Algorithm* a : lineup.algorithms) {
+      if (a->kind == Algorithm::Kind::process) {
+        if (planned.levels) process_entries(a, planned.pool, levels, entries);
+        continue;
+      }
+      if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, entries);
+      if (planned.stages) stage_entries(a, planned.pool, entries);
+    }
+  }
+  return entries;
+}
+
+void report_untimed(const EntryList& untimed, std::ostream& out) {
+  for (const auto& e : untimed) {
+    if (!e->not_timed.empty()) {
+      out << "not timed: " << e->name() << ": " << e->not_timed << "; " << e->score.wrong << " wrong, "
+          << e->score.unsupported << " unsupported of " << e->pool->size() << " pairs";
+      if (!e->faults.empty()) out << ", " << e->faults.size() << " crash(es) or timeout(s)";
+      out << '\n';
+      if (e->faults.empty()) continue;
+    }
+    std::size_t crashes = 0;
+    for (const Fault& f : e->faults) crashes += f.fate == Fate::crash;
+    const Fault& first = e->faults.front();
+    Case c;
+    c.name = e->pool->name() + "#" + std::to_string(first.index);
+    c.pair = e->pool->pairs[first.index];
+    out << "not timed: " << e->name() << ": " << crashes << " crash(es), " << e->faults.size() - crashes
+        << " timeout(s) when checked; first: " << to_string(first.fate) << " (" << first.detail << ") on\n"
+        << format_case(c, NumberStyle::g17) << '\n' << format_case(c, NumberStyle::hex) << '\n';
+  }
+}
+
+}  // namespace tritri::bench

@@ -1,0 +1,61 @@
+// What `tritri bench` times: one entry per algorithm x level (or stage) x pool, checked against
+// the oracle and counted before anything is timed. Internal to harness/bench.
+#pragma once
+
+#include "harness/bench/bench.hpp"
+#include "harness/bench/workload.hpp"
+
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tritri::bench {
+
+struct Entry {
+  std::string algo;
+  std::string level;  // "overlap", "relation", "segment", "stage:NAME"
+  const Algorithm* algorithm = nullptr;
+  std::optional<Level> answer_level;  // unset for stages
+  const StageEntry* stage = nullptr;
+  const Pool* pool = nullptr;
+  std::vector<TrianglePair> prepared;  // a stage's input when it has a prepare step
+  bool floor = false;
+  Score score;
+  std::vector<Fault> faults;    // pairs it crashed or hung on when checked: then it is not timed
+  std::string not_timed;        // why it is checked but not timed, when it is not for a fault
+  std::optional<OpCounts> ops;  // totals over the pool
+  std::vector<double> ns_per_pair;  // one per repetition (CPU time)
+
+  std::string row() const { return algo + "/" + level; }
+  std::string name() const { return row() + "/" + pool->name(); }
+  const TrianglePair* input() const { return prepared.empty() ? pool->pairs.data() : prepared.data(); }
+};
+using EntryList = std::vector<std::unique_ptr<Entry>>;
+
+// The algorithms of a run, the floors first, then the reference, then the rest.
+struct Lineup {
+  std::vector<const Algorithm*> algorithms;
+  std::vector<const Algorithm*> floors;
+  const Algorithm* reference = nullptr;
+  Level reference_level = Level::overlap;  // its overlap level, or else its first answered one
+
+  bool is_floor(const Algorithm* a) const;
+  std::string reference_row() const;  // "moller97/overlap"
+};
+
+struct Entries {
+  EntryList timed;
+  EntryList untimed;  // checked and reported, not timed (a fault, or a process plug-in)
+};
+
+// Checks every algorithm on every pool (each in a child process unless isolation is off) and
+// counts the operations of its counting instantiation, per what the pool is planned for.
+Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup, const std::vector<Level>& levels,
+                     const Options& options);
+
+// "not timed: ..." lines, with the first pair that crashed or hung, paste-ready.
+void report_untimed(const EntryList& untimed, std::ostream& out);
+
+}  // namespace tritri::bench
