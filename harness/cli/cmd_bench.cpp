@@ -5,76 +5,68 @@
 #include <iostream>
 
 namespace tritri::cli {
+namespace {
 
-int run_bench(int argc, char** argv) {
-  Args args(argc, argv,
-            with({"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
-                  "--json", "--cases", "--reference"},
-                 kRunValuedOptions),
-            with({"--quick", "--no-interleave", "--no-ops", "--list"}, kRunFlags));
-  if (args.help()) {
-    std::cout
-        << "usage: tritri bench [--quick] [--algo NAME]... [--level L]... [--workload W]...\n"
-           "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
-           "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
-           "                    [--json OUT] [--cases FILE]... [--list]\n\n"
-           "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
-           "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
-           "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
-           "  ratio:R    R = 0, 0.1, ..., 1: exactly R of the pairs intersect; triangles of mixed\n"
-           "             sizes, so every exit stage of a plane-rejecting test occurs\n"
-           "  type:T     T = disjoint, point, segment, area: the dimension of the intersection\n"
-           "  family:F   one pool per corpus family (the generator's, or the cases of --cases):\n"
-           "             what singular and near-singular input costs\n"
-           "  stage      the stages an algorithm registers (Yu-He's transform / test in the frame),\n"
-           "             on the ratio:0.50 pool\n"
-           "  size:N     the ratio:0.50 pool at N pairs; bare 'size' is N = 4096, 16384, 65536,\n"
-           "             262144, 1048576: how a small pool lets the branch predictor learn the\n"
-           "             answers. Not in the default set (labelling a million pairs takes a while);\n"
-           "             --pool does not apply to it\n"
-           "Benchmarks are named algo/level/workload:value (e.g. moller97/overlap/ratio:0.50). Every\n"
-           "algorithm is checked on every pool first: 'wrong' counts its disagreements with the\n"
-           "oracle, shown beside the time. Prints ns per pair per algorithm x workload, relative\n"
-           "to the reference, the operation counts of the counting instantiations, the harness\n"
-           "floor (and the null algorithm) and the repetitions' spread.\n\n"
-           "  --quick            CI: pools of 4096 pairs, the CI corpus, 3 repetitions, short runs\n"
-           "  --algo NAME        algorithms to time (repeat, or NAME,NAME); default all. The\n"
-           "                     reference and the floors are always included\n"
-           "  --level L          overlap, relation or segment (repeatable); default all\n"
-           "  --workload W       ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N\n"
-           "                     (repeatable); default ratio, type, family, stage\n"
-           "  --reference NAME   every time is also given relative to NAME's overlap level (or its\n"
-           "                     first level) on the same pool, in the same run (default moller97);\n"
-           "                     the JSON records it and each result's 'relative_to_reference'\n"
-           "  --filter REGEX     run only the benchmarks whose name matches (Google Benchmark's)\n"
-           "  --pool N           pairs per pool (default 65536)\n"
-           "  --seed S           seed of the pools (default 20240601); recorded in the JSON\n"
-           "  --repetitions N    repetitions per benchmark, median reported (default 9)\n"
-           "  --min-time SEC     minimum time per repetition (default 0.1)\n"
-           "  --no-interleave    run the repetitions of a benchmark back to back\n"
-           "  --no-ops           skip the operation counts\n"
-           "  --json OUT         write Google Benchmark's JSON with tritri's context keys and a\n"
-           "                     'tritri' section (reference, pools, medians, ratios, operation\n"
-           "                     counts); default tritri-bench.json; '-' for none\n"
-           "  --cases FILE       case files for the family workloads (repeatable), instead of the\n"
-           "                     corpus generator's families\n"
-           "  --list             build the pools, list the benchmarks' names and exit\n\n"
-           "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
-           "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
-           "                     process), a pair that makes no progress for S seconds is a timeout\n"
-           "                     (default 2); an algorithm that crashes or hangs on a pool is\n"
-           "                     reported with the pair, paste-ready, and not timed on that pool\n"
-           "  --no-isolation     check in this process (a crash ends the run)\n\n"
-           "  --exec COMMAND     a process plug-in (harness/run/process_plugin.hpp): checked on every\n"
-           "                     pool and reported, never timed (its answers cross a pipe; on\n"
-           "                     the default pools that takes a while). --exec-name NAME names it.\n\n"
-           "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments (an unknown\n"
-           "workload or reference among them).\n";
-    return kOk;
-  }
-  if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
+constexpr const char* kHelp =
+    "usage: tritri bench [--quick] [--algo NAME]... [--level L]... [--workload W]...\n"
+    "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
+    "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
+    "                    [--json OUT] [--cases FILE]... [--list]\n\n"
+    "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
+    "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
+    "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
+    "  ratio:R    R = 0, 0.1, ..., 1: exactly R of the pairs intersect; triangles of mixed\n"
+    "             sizes, so every exit stage of a plane-rejecting test occurs\n"
+    "  type:T     T = disjoint, point, segment, area: the dimension of the intersection\n"
+    "  family:F   one pool per corpus family (the generator's, or the cases of --cases):\n"
+    "             what singular and near-singular input costs\n"
+    "  stage      the stages an algorithm registers (Yu-He's transform / test in the frame),\n"
+    "             on the ratio:0.50 pool\n"
+    "  size:N     the ratio:0.50 pool at N pairs; bare 'size' is N = 4096, 16384, 65536,\n"
+    "             262144, 1048576: how a small pool lets the branch predictor learn the\n"
+    "             answers. Not in the default set (labelling a million pairs takes a while);\n"
+    "             --pool does not apply to it\n"
+    "Benchmarks are named algo/level/workload:value (e.g. moller97/overlap/ratio:0.50). Every\n"
+    "algorithm is checked on every pool first: 'wrong' counts its disagreements with the\n"
+    "oracle, shown beside the time. Prints ns per pair per algorithm x workload, relative\n"
+    "to the reference, the operation counts of the counting instantiations, the harness\n"
+    "floor (and the null algorithm) and the repetitions' spread.\n\n"
+    "  --quick            CI: pools of 4096 pairs, the CI corpus, 3 repetitions, short runs\n"
+    "  --algo NAME        algorithms to time (repeat, or NAME,NAME); default all. The\n"
+    "                     reference and the floors are always included\n"
+    "  --level L          overlap, relation or segment (repeatable); default all\n"
+    "  --workload W       ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N\n"
+    "                     (repeatable); default ratio, type, family, stage\n"
+    "  --reference NAME   every time is also given relative to NAME's overlap level (or its\n"
+    "                     first level) on the same pool, in the same run (default moller97);\n"
+    "                     the JSON records it and each result's 'relative_to_reference'\n"
+    "  --filter REGEX     run only the benchmarks whose name matches (Google Benchmark's)\n"
+    "  --pool N           pairs per pool (default 65536)\n"
+    "  --seed S           seed of the pools (default 20240601); recorded in the JSON\n"
+    "  --repetitions N    repetitions per benchmark, median reported (default 9)\n"
+    "  --min-time SEC     minimum time per repetition (default 0.1)\n"
+    "  --no-interleave    run the repetitions of a benchmark back to back\n"
+    "  --no-ops           skip the operation counts\n"
+    "  --json OUT         write Google Benchmark's JSON with tritri's context keys and a\n"
+    "                     'tritri' section (reference, pools, medians, ratios, operation\n"
+    "                     counts); default tritri-bench.json; '-' for none\n"
+    "  --cases FILE       case files for the family workloads (repeatable), instead of the\n"
+    "                     corpus generator's families\n"
+    "  --list             build the pools, list the benchmarks' names and exit\n\n"
+    "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
+    "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
+    "                     process), a pair that makes no progress for S seconds is a timeout\n"
+    "                     (default 2); an algorithm that crashes or hangs on a pool is\n"
+    "                     reported with the pair, paste-ready, and not timed on that pool\n"
+    "  --no-isolation     check in this process (a crash ends the run)\n\n"
+    "  --exec COMMAND     a process plug-in (harness/run/process_plugin.hpp): checked on every\n"
+    "                     pool and reported, never timed (its answers cross a pipe; on\n"
+    "                     the default pools that takes a while). --exec-name NAME names it.\n\n"
+    "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments (an unknown\n"
+    "workload or reference among them).\n";
 
-  load_external_algorithms(args);
+// The options the command line asks for, checked.
+bench::Options options_from(const Args& args) {
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
   options.isolation = isolation_options(args);
   std::vector<std::string> names;
@@ -108,6 +100,25 @@ int run_bench(int argc, char** argv) {
     options.family_cases = load_cases(case_files);
     for (const auto& f : case_files) options.family_source += (options.family_source.empty() ? "" : " ") + f;
   }
+  return options;
+}
+
+}  // namespace
+
+int run_bench(int argc, char** argv) {
+  Args args(argc, argv,
+            with({"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
+                  "--json", "--cases", "--reference"},
+                 kRunValuedOptions),
+            with({"--quick", "--no-interleave", "--no-ops", "--list"}, kRunFlags));
+  if (args.help()) {
+    std::cout << kHelp;
+    return kOk;
+  }
+  if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
+
+  load_external_algorithms(args);
+  const bench::Options options = options_from(args);
   try {
     return bench::run(options, std::cout);
   } catch (const std::invalid_argument& e) {

@@ -69,6 +69,69 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
   }
 }
 
+// The JSON and the baseline the command line asks for, each written atomically.
+void write_outputs(const Args& args, const CheckResult& result, const std::vector<Case>& cases,
+                   const std::vector<OracleRecord>& oracle) {
+  if (auto json = args.value("--json"))
+    write_file_atomically(*json, [&](std::ostream& out) {
+      if (args.value("--json-max-failures"))
+        write_check_json(out, with_failures_capped(result, cases, args.count("--json-max-failures", 0)), cases,
+                         oracle, args.positional());
+      else
+        write_check_json(out, result, cases, oracle, args.positional());
+    });
+  if (auto out_path = args.value("--write-baseline"))
+    write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });
+}
+
+constexpr const char* kUsageText =
+    "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
+    "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
+    "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
+    "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
+    "                    FILE...\n\n"
+    "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
+    "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
+    "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
+    "relation (misclassified relation, '-' when not answered), unsupported (declined, or\n"
+    "degenerate input the algorithm does not accept), crash and timeout (the algorithm died\n"
+    "or hung on the case: each algorithm runs in a child process, and the case responsible is\n"
+    "found by bisection; the others are still checked). Then the first N disagreements\n"
+    "(default 20), each paste-ready as a case line in %.17g and in hex float.\n\n"
+    "For algorithms that answer the relation level, a confusion table follows: per algorithm\n"
+    "x family, 'answered->oracle count' for every wrong cell (relation names, or dim:<d> for\n"
+    "an algorithm that states only the dimension). For algorithms that answer the segment\n"
+    "level, a segment table: cases answered, errors measured (Hausdorff distance between the\n"
+    "answered and the exact point or segment, over the pair's bounding-box diagonal), their\n"
+    "median and max, kind mismatches (answered empty/point/segment/area where the exact\n"
+    "intersection has another dimension) and coplanar contacts answered without geometry.\n\n"
+    "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'\n"
+    "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
+    "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
+    "                       is new; list the recorded ones that no longer occur\n"
+    "  --write-baseline F   record this run's disagreements as a baseline\n"
+    "  --max-failures N     how many disagreements to print (default 20)\n"
+    "  --json-max-failures N  keep only the first N disagreements per algorithm x family x\n"
+    "                       level in the JSON (default: all); the tallies count every case\n"
+    "  --confusion          print every confusion cell, the right ones too\n"
+    "  --quiet              print only the tables (and the baseline comparison)\n"
+    "  --float              run each algorithm's float instantiation instead (named NAME@float;\n"
+    "                       each pair is rounded to float inside the call and judged against\n"
+    "                       the oracle on the double input); algorithms without one are left\n"
+    "                       out. No baseline records these names.\n"
+    "  --group-by KEY[,KEY]...  tally per group of labels instead of per family (repeat for\n"
+    "                       several groupings; a case is counted once in each it is in):\n"
+    "                       the group is 'KEY=value KEY=value' from the case's labels, and\n"
+    "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
+    "                       the cases with that value; @base is the case's name up to its\n"
+    "                       last '.' (the base construction of a corpus variant). E.g.\n"
+    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n";
+
+constexpr const char* kExitStatus =
+    "\n"
+    "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
+    "bad arguments or input.\n";
+
 }  // namespace
 
 int run_check(int argc, char** argv) {
@@ -77,52 +140,7 @@ int run_check(int argc, char** argv) {
                  kRunValuedOptions),
             with({"--quiet", "--confusion", "--float"}, kRunFlags));
   if (args.help()) {
-    std::cout
-        << "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
-           "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
-           "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
-           "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
-           "                    FILE...\n\n"
-           "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
-           "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
-           "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
-           "relation (misclassified relation, '-' when not answered), unsupported (declined, or\n"
-           "degenerate input the algorithm does not accept), crash and timeout (the algorithm died\n"
-           "or hung on the case: each algorithm runs in a child process, and the case responsible is\n"
-           "found by bisection; the others are still checked). Then the first N disagreements\n"
-           "(default 20), each paste-ready as a case line in %.17g and in hex float.\n\n"
-           "For algorithms that answer the relation level, a confusion table follows: per algorithm\n"
-           "x family, 'answered->oracle count' for every wrong cell (relation names, or dim:<d> for\n"
-           "an algorithm that states only the dimension). For algorithms that answer the segment\n"
-           "level, a segment table: cases answered, errors measured (Hausdorff distance between the\n"
-           "answered and the exact point or segment, over the pair's bounding-box diagonal), their\n"
-           "median and max, kind mismatches (answered empty/point/segment/area where the exact\n"
-           "intersection has another dimension) and coplanar contacts answered without geometry.\n\n"
-           "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'\n"
-           "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
-           "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
-           "                       is new; list the recorded ones that no longer occur\n"
-           "  --write-baseline F   record this run's disagreements as a baseline\n"
-           "  --max-failures N     how many disagreements to print (default 20)\n"
-           "  --json-max-failures N  keep only the first N disagreements per algorithm x family x\n"
-           "                       level in the JSON (default: all); the tallies count every case\n"
-           "  --confusion          print every confusion cell, the right ones too\n"
-           "  --quiet              print only the tables (and the baseline comparison)\n"
-           "  --float              run each algorithm's float instantiation instead (named NAME@float;\n"
-           "                       each pair is rounded to float inside the call and judged against\n"
-           "                       the oracle on the double input); algorithms without one are left\n"
-           "                       out. No baseline records these names.\n"
-           "  --group-by KEY[,KEY]...  tally per group of labels instead of per family (repeat for\n"
-           "                       several groupings; a case is counted once in each it is in):\n"
-           "                       the group is 'KEY=value KEY=value' from the case's labels, and\n"
-           "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
-           "                       the cases with that value; @base is the case's name up to its\n"
-           "                       last '.' (the base construction of a corpus variant). E.g.\n"
-           "                       --group-by variant=symmetry,@base --group-by variant,tilt\n"
-        << kRunOptionsHelp
-        << "\n"
-           "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
-           "bad arguments or input.\n";
+    std::cout << kUsageText << kRunOptionsHelp << kExitStatus;
     return kOk;
   }
   load_external_algorithms(args);
@@ -150,16 +168,7 @@ int run_check(int argc, char** argv) {
     std::cout << '\n';
     print_failures(std::cout, result, cases, max_failures);
   }
-  if (auto json = args.value("--json"))
-    write_file_atomically(*json, [&](std::ostream& out) {
-      if (args.value("--json-max-failures"))
-        write_check_json(out, with_failures_capped(result, cases, args.count("--json-max-failures", 0)), cases,
-                         oracle, args.positional());
-      else
-        write_check_json(out, result, cases, oracle, args.positional());
-    });
-  if (auto out_path = args.value("--write-baseline"))
-    write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });
+  write_outputs(args, result, cases, oracle);
 
   if (baseline_files.empty()) return kOk;
   const auto comparison = compare_with_baseline(recorded, result, cases);
