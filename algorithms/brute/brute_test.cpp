@@ -1,24 +1,18 @@
-// The brute-force baseline: its segment-vs-triangle test, its answers in general position, how it
-// handles edges in the other plane, and its coplanar branch.
+// The brute-force baseline: its segment-vs-triangle test, how it handles edges in the other
+// plane, and its coplanar branch. Its answers against the oracle are the conformance suite's: on
+// small integers its determinants are exact, so it is right there, singular pairs included.
 #include "algorithms/brute/brute.hpp"
 
-#include "cases/casefile.hpp"
 #include "cases/oracle/oracle.hpp"
-#include "tritri/counting.hpp"
-
-#include "harness/testing/counting_pairs.hpp"
+#include "harness/testing/hand_built.hpp"
+#include "harness/testing/tritri/testing.hpp"
 
 #include <gtest/gtest.h>
 
-#include <random>
+TRITRI_ALGORITHM_CONFORMANCE(Brute, "brute", exact)
 
 namespace tritri::brute {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
-
-std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
 
 TEST(BrutePieces, SegmentTestIsClosedAtBothEnds) {
   EXPECT_TRUE(segment_hits_triangle<double>({1, 1, -1}, {1, 1, 1}, kFloor).hit);   // through the face
@@ -39,33 +33,6 @@ TEST(BrutePieces, EdgesParallelToThePlaneAreSkipped) {
   EXPECT_TRUE(inside.parallel);
 }
 
-TEST(Brute, GeneralBuiltinCasesAgreeWithTheOracle) {
-  for (const auto& c : builtin_cases()) {
-    if (c.family() != "general") continue;
-    const bool truth = oracle_label(c.pair).overlap;
-    EXPECT_EQ(overlap(c.pair), truth) << c.name;
-    EXPECT_EQ(overlap(swapped(c.pair)), truth) << c.name << " (swapped)";
-  }
-}
-
-TEST(Brute, RandomGeneralPositionPairsAgreeWithTheOracle) {
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<double> coord(-1, 1);
-  int checked = 0, overlapping = 0;
-  for (int n = 0; n < 3000; ++n) {
-    TrianglePair p;
-    for (auto* t : {&p.t1, &p.t2})
-      for (int i = 0; i < 3; ++i) (*t)[i] = Vec3<double>(coord(rng), coord(rng), coord(rng));
-    const OracleRecord truth = oracle_label(p);
-    if (truth.relation != Relation::disjoint && truth.relation != Relation::cross) continue;
-    ++checked;
-    overlapping += truth.overlap;
-    ASSERT_EQ(overlap(p), truth.overlap) << format_case({"r", p, {}, "", 0}, NumberStyle::hex);
-  }
-  EXPECT_GT(checked, 2900);
-  EXPECT_GT(overlapping, 100);
-}
-
 TEST(Brute, AnEdgeInThePlaneIsFoundThroughItsNeighbours) {
   // T2's edge lies in T1's plane and crosses T1 with both endpoints outside it: the edge itself
   // is skipped, the two other edges meet the plane outside T1, and the hit comes from T1's
@@ -84,16 +51,6 @@ TEST(Brute, CoplanarBranchIsMollers) {
   const TrianglePair collinear{kFloor, tri({2, 0, 0}, {6, 0, 0}, {4, -2, 0})};
   ASSERT_TRUE(oracle_label(collinear).overlap);
   EXPECT_TRUE(overlap(collinear));
-}
-
-// ---- the counting instantiation (tritri bench's operation counts) ----
-
-// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
-TEST(BruteCounted, GivesTheDoubleAnswers) {
-  test_support::expect_counted_matches_double(1, [](const auto& p) {
-    using T = test_support::scalar_of<decltype(p)>;
-    return std::tuple{overlap<T>(p)};
-  });
 }
 
 }  // namespace

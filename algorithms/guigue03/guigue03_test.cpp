@@ -1,40 +1,20 @@
-// Guigue–Devillers 2003: the lone-vertex table, the 2-D region test, and the two tests against the
-// oracle. Sign-only code on small integers is exact in double, so there the port must agree with
-// the oracle on every pair, singular or not.
+// Guigue–Devillers 2003: the lone-vertex table, the 2-D region test, and the segment against the
+// oracle's. Sign-only code on small integers is exact in double, so there both entries must agree
+// with the oracle on every pair, singular or not: the conformance suite's promise "exact".
 #include "algorithms/guigue03/guigue03.hpp"
 
 #include "cases/casefile.hpp"
 #include "cases/oracle/oracle.hpp"
-#include "tritri/counting.hpp"
-
-#include "harness/testing/counting_pairs.hpp"
+#include "harness/testing/hand_built.hpp"
+#include "harness/testing/tritri/testing.hpp"
 
 #include <gtest/gtest.h>
 
-#include <random>
+TRITRI_ALGORITHM_CONFORMANCE(Guigue03, "guigue03", exact)
+TRITRI_ALGORITHM_CONFORMANCE(Guigue03Segment, "guigue03-segment", exact)
 
 namespace tritri::guigue03 {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
-
-std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
-
-// Random pairs of proper triangles with coordinates in [-range, range]: small ranges make many
-// vertices fall on planes and edges, so every branch of the case analysis is exercised.
-std::vector<TrianglePair> random_pairs(int count, int range, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> coord(-range, range);
-  std::vector<TrianglePair> pairs;
-  while (static_cast<int>(pairs.size()) < count) {
-    TrianglePair p;
-    for (auto* t : {&p.t1, &p.t2})
-      for (int i = 0; i < 3; ++i) (*t)[i] = Vec3<double>(coord(rng), coord(rng), coord(rng));
-    if (!has_degenerate_triangle(p)) pairs.push_back(p);
-  }
-  return pairs;
-}
 
 TEST(Guigue03Pieces, OrientationSignConvention) {
   // [a,b,c,d] > 0 when d is on the side that (b−a)×(c−a) points to
@@ -60,7 +40,7 @@ TEST(Guigue03Pieces, LoneVertexIsAloneAndItsEdgesReachThePlane) {
         ASSERT_GE(l.index, 0);
         const int f = l.flip ? -1 : 1;
         const int first = f * s[l.index], second = f * s[(l.index + 1) % 3], third = f * s[(l.index + 2) % 3];
-        SCOPED_TRACE(testing::Message() << a << " " << b << " " << c);
+        SCOPED_TRACE(::testing::Message() << a << " " << b << " " << c);
         EXPECT_GE(first, 0);
         EXPECT_LE(second, 0);
         EXPECT_LE(third, 0);
@@ -102,29 +82,11 @@ TEST(Guigue03Pieces, RegionTestInEachRegionKind) {
   EXPECT_FALSE(ccw_overlap_2d<double>(P{5, 0}, P{7, -2}, P{9, 0}, a, b, c));
 }
 
-TEST(Guigue03, BuiltinCasesAgreeWithTheOracle) {
-  for (const auto& c : builtin_cases()) {
-    const bool truth = oracle_label(c.pair).overlap;
-    EXPECT_EQ(overlap(c.pair), truth) << c.name;
-    EXPECT_EQ(overlap(swapped(c.pair)), truth) << c.name << " (swapped)";
-    EXPECT_EQ(overlap_with_segment(c.pair), truth) << c.name << " (segment variant)";
-  }
-}
-
-TEST(Guigue03, RandomSmallIntegerPairsAgreeWithTheOracle) {
-  int singular = 0;
-  for (const auto& p : random_pairs(4000, 3, 2003)) {
-    const OracleRecord truth = oracle_label(p);
-    if (truth.relation != Relation::disjoint && truth.relation != Relation::cross) ++singular;
-    ASSERT_EQ(overlap(p), truth.overlap) << format_case({"r", p, {}, "", 0}, NumberStyle::g17);
-    ASSERT_EQ(overlap(swapped(p)), truth.overlap);
-  }
-  EXPECT_GT(singular, 200);  // the sample really does exercise the singular cases
-}
-
+// Small integers in [-3, 3]: many vertices fall on planes and edges, so every branch of the
+// case analysis is exercised, and every endpoint is to within rounding of the exact one.
 TEST(Guigue03, SegmentMatchesTheOraclesIntersection) {
   int compared = 0;
-  for (const auto& p : random_pairs(3000, 3, 8)) {
+  for (const auto& p : testing::random_grid_pairs(8, 3000, 3)) {
     const OracleRecord truth = oracle_label(p);
     const SegmentAnswer s = segment(p);
     if (truth.coplanar) {
@@ -152,25 +114,6 @@ TEST(Guigue03, SegmentMatchesTheOraclesIntersection) {
     ++compared;
   }
   EXPECT_GT(compared, 300);
-}
-
-TEST(Guigue03, FloatInstantiationAnswersTheBuiltinGeneralCases) {
-  for (const auto& c : builtin_cases()) {
-    if (c.family() != "general") continue;
-    EXPECT_EQ(overlap(cast<float>(c.pair)), oracle_label(c.pair).overlap) << c.name;
-  }
-}
-
-// ---- the counting instantiation (tritri bench's operation counts) ----
-
-// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
-
-
-TEST(Guigue03Counted, GivesTheDoubleAnswers) {
-  test_support::expect_counted_matches_double(3, [](const auto& p) {
-    using T = test_support::scalar_of<decltype(p)>;
-    return std::tuple{overlap<T>(p), overlap_with_segment<T>(p), segment<T>(p)};
-  });
 }
 
 }  // namespace

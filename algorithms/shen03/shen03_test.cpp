@@ -1,23 +1,18 @@
-// Shen–Heng–Tang 2003: its signed distances, its tolerance, and its answers in general position.
+// Shen–Heng–Tang 2003: its signed distances and its tolerance. Its answers against the oracle are
+// the conformance suite's: on small integers, distances are exactly 0 or at least 1e-3, so the
+// tolerance never decides and the test answers as Guigue–Devillers does, exact there, singular
+// pairs included.
 #include "algorithms/shen03/shen03.hpp"
 
-#include "cases/casefile.hpp"
-#include "cases/oracle/oracle.hpp"
-#include "tritri/counting.hpp"
-
-#include "harness/testing/counting_pairs.hpp"
+#include "harness/testing/hand_built.hpp"
+#include "harness/testing/tritri/testing.hpp"
 
 #include <gtest/gtest.h>
 
-#include <random>
+TRITRI_ALGORITHM_CONFORMANCE(Shen03, "shen03", exact)
 
 namespace tritri::shen03 {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
-
-std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
 
 TEST(Shen03Pieces, VertexPlaneDistancesAreLengths) {
   double d[3];
@@ -48,49 +43,6 @@ TEST(Shen03Pieces, ToleranceIsAbsoluteAndBelowItCountsAsZero) {
   EXPECT_EQ(tolerant_sign(-1.5e-7), -1);
 }
 
-TEST(Shen03, GeneralBuiltinCasesAgreeWithTheOracle) {
-  for (const auto& c : builtin_cases()) {
-    if (c.family() != "general") continue;
-    const bool truth = oracle_label(c.pair).overlap;
-    EXPECT_EQ(overlap(c.pair), truth) << c.name;
-    EXPECT_EQ(overlap(swapped(c.pair)), truth) << c.name << " (swapped)";
-  }
-}
-
-TEST(Shen03, RandomGeneralPositionPairsAgreeWithTheOracle) {
-  std::mt19937 rng(2003);
-  std::uniform_real_distribution<double> coord(-1, 1);
-  int checked = 0, overlapping = 0;
-  for (int n = 0; n < 3000; ++n) {
-    TrianglePair p;
-    for (auto* t : {&p.t1, &p.t2})
-      for (int i = 0; i < 3; ++i) (*t)[i] = Vec3<double>(coord(rng), coord(rng), coord(rng));
-    const OracleRecord truth = oracle_label(p);
-    if (truth.relation != Relation::disjoint && truth.relation != Relation::cross) continue;
-    if (!truth.overlap && truth.separation < 1e-5) continue;  // well clear of the tolerance
-    ++checked;
-    overlapping += truth.overlap;
-    ASSERT_EQ(overlap(p), truth.overlap) << format_case({"r", p, {}, "", 0}, NumberStyle::hex);
-    ASSERT_EQ(overlap(swapped(p)), truth.overlap);
-  }
-  EXPECT_GT(checked, 2500);
-  EXPECT_GT(overlapping, 100);
-}
-
-TEST(Shen03, SmallIntegerPairsIncludingSingularOnesAgreeWithTheOracle) {
-  // Exact distances of 0 or ≥ 1e-3 on small integers: the tolerance never decides, so the
-  // test answers as Guigue–Devillers does, which is exact there.
-  std::mt19937 rng(7);
-  std::uniform_int_distribution<int> coord(-3, 3);
-  for (int n = 0; n < 3000; ++n) {
-    TrianglePair p;
-    for (auto* t : {&p.t1, &p.t2})
-      for (int i = 0; i < 3; ++i) (*t)[i] = Vec3<double>(coord(rng), coord(rng), coord(rng));
-    if (has_degenerate_triangle(p)) continue;
-    ASSERT_EQ(overlap(p), oracle_label(p).overlap) << format_case({"r", p, {}, "", 0}, NumberStyle::g17);
-  }
-}
-
 TEST(Shen03, NearMissesWithinTheToleranceCountAsTouching) {
   auto hovering = [](double h) { return TrianglePair{kFloor, tri({1, 1, h}, {1, 1, 3}, {3, 2, 3})}; };
   EXPECT_TRUE(overlap(hovering(5e-8)));   // apart by 5e-8: reported overlapping (by design)
@@ -99,16 +51,6 @@ TEST(Shen03, NearMissesWithinTheToleranceCountAsTouching) {
   // a near-coplanar pair within the tolerance takes the coplanar branch
   EXPECT_TRUE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-8}, {5, 1, 5e-8}, {1, 5, 5e-8})}));
   EXPECT_FALSE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-6}, {5, 1, 5e-6}, {1, 5, 5e-6})}));
-}
-
-// ---- the counting instantiation (tritri bench's operation counts) ----
-
-// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
-TEST(Shen03Counted, GivesTheDoubleAnswers) {
-  test_support::expect_counted_matches_double(30, [](const auto& p) {
-    using T = test_support::scalar_of<decltype(p)>;
-    return std::tuple{overlap<T>(p)};
-  });
 }
 
 }  // namespace

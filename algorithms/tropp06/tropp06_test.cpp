@@ -1,25 +1,25 @@
 // Tropp–Tal–Shimshoni 2006: the scaled cut segment, the 2-D step and its edge-pair codes, the
-// answers in general position, and the two defects of the published routine.
+// built-in general cases, the defects of the published routine, and its operation counts.
+// Against the oracle, the conformance suite holds the published routine to random pairs in
+// general position (its x–y step is blind to planes through the z axis, which random pairs never
+// are), and the fixed one to every small-integer pair, singular ones included.
 #include "algorithms/tropp06/tropp06.hpp"
 
 #include "cases/casefile.hpp"
 #include "cases/oracle/oracle.hpp"
+#include "harness/testing/hand_built.hpp"
+#include "harness/testing/tritri/testing.hpp"
 #include "tritri/counting.hpp"
-
-#include "harness/testing/counting_pairs.hpp"
 
 #include <gtest/gtest.h>
 
-#include <random>
+TRITRI_ALGORITHM_CONFORMANCE(Tropp06, "tropp06", almost_everywhere)
+TRITRI_ALGORITHM_CONFORMANCE(Tropp06Fixed, "tropp06-fixed", exact)
 
 namespace tritri::tropp06 {
 namespace {
 
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 const Triangle kWall = tri({0, 0, 0}, {4, 0, 0}, {0, 0, 4});  // plane y = 0: contains the z axis
-
-std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
 
 // The cut segment's endpoints, unscaled, in world coordinates.
 std::pair<Vec3<double>, Vec3<double>> endpoints(const TrianglePair& p) {
@@ -100,25 +100,6 @@ TEST(Tropp06, GeneralBuiltinCasesAgreeWithTheOracle) {
   EXPECT_EQ(vertical, 2);
 }
 
-TEST(Tropp06, RandomGeneralPositionPairsAgreeWithTheOracle) {
-  std::mt19937 rng(2006);
-  std::uniform_real_distribution<double> coord(-1, 1);
-  int checked = 0, overlapping = 0;
-  for (int n = 0; n < 3000; ++n) {
-    TrianglePair p;
-    for (auto* t : {&p.t1, &p.t2})
-      for (int i = 0; i < 3; ++i) (*t)[i] = Vec3<double>(coord(rng), coord(rng), coord(rng));
-    const OracleRecord truth = oracle_label(p);
-    if (truth.relation != Relation::disjoint && truth.relation != Relation::cross) continue;
-    ++checked;
-    overlapping += truth.overlap;
-    ASSERT_EQ(overlap<double>(p), truth.overlap) << format_case({"r", p, {}, "", 0}, NumberStyle::hex);
-    ASSERT_EQ((overlap<double, Projection::dominant, true>(p)), truth.overlap);
-  }
-  EXPECT_GT(checked, 2900);
-  EXPECT_GT(overlapping, 100);
-}
-
 // Published defect 1: the 2-D step in x–y. With A in the plane y = 0 every 2-D cross product
 // vanishes: a plain crossing is reported disjoint.
 TEST(Tropp06Defects, VerticalPlaneAIsReportedDisjoint) {
@@ -172,20 +153,17 @@ TEST(Tropp06Defects, CutLineThroughC1IsComparedWithC1Only) {
 
 // ---- the counting instantiation (tritri bench's operation counts) ----
 
-// Random reals: general position, where no answer hangs on the last bit. Small integers and
-// the built-in cases: vertices on planes and edges, coplanar pairs, exact contacts, where one
-// may. Zero-area triangles are left out, as the harness leaves them out for this port.
-using test_support::CountingPairs;
-
-CountingPairs counting_pairs() { return test_support::counting_pairs(6); }
-
-// Counted answers exactly as double does (test_support/counting_pairs.hpp says why).
-TEST(Tropp06Counted, GivesTheDoubleAnswers) {
-  test_support::expect_counted_matches_double(6, [](const auto& p) {
-    using T = test_support::scalar_of<decltype(p)>;
-    // the edge-pair code, not only the boolean: the counted run must take the same path
-    return std::tuple{intersect<T>(p), intersect<T, Projection::dominant, true>(p)};
-  });
+// The edge-pair codes, not only the overlap the suite compares: the counted run must take the
+// same path as the double one, or its counts are of another computation.
+TEST(Tropp06Counted, TakesTheDoublePath) {
+  for (const TrianglePair& p : testing::counting_pairs()) {
+    const PairT<Counted> c = cast<Counted>(p);
+    if (intersect<double>(p) == intersect<Counted>(c) &&
+        (intersect<double, Projection::dominant, true>(p)) == (intersect<Counted, Projection::dominant, true>(c)))
+      continue;
+    ADD_FAILURE() << "an edge-pair code differs between double and Counted on\n"
+                  << format_case({"counted", p, {}, "", 0}, NumberStyle::hex);
+  }
 }
 
 OpCounts counts_of(const TrianglePair& p) {
@@ -203,9 +181,7 @@ TEST(Tropp06Counted, AStep3RejectCostsWhatTheCodeSays) {
 
 // Division-free as the paper says, and every pair costs at least the step-3 reject's set-up.
 TEST(Tropp06Counted, NoDivisionsAndNoSquareRoots) {
-  const CountingPairs both = counting_pairs();
-  std::vector<TrianglePair> pairs = both.general;
-  pairs.insert(pairs.end(), both.singular.begin(), both.singular.end());
+  const std::vector<TrianglePair> pairs = testing::counting_pairs();
   OpCounts total;
   for (const TrianglePair& p : pairs) {
     const OpCounts c = counts_of(p);

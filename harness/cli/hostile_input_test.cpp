@@ -38,13 +38,21 @@ TEST(HostileInput, NaNAndInfinitiesAreRefusedWithFileAndLine) {
   }
 }
 
+// Valid but hostile cases: extreme magnitudes, and zero-area triangles and repeated vertices.
+const std::string kValidButHostile =
+    "huge 0 0 0 1e300 0 0 0 1e300 0  1e299 1e299 -1e300 1e299 1e299 1e300 -1e300 1e299 0\n"
+    "huge-apart 0 0 0 1e300 0 0 0 1e300 0  0 0 1e300 1e300 0 1e300 0 1e300 1e300\n"
+    "tiny 0 0 0 1e-300 0 0 0 1e-300 0  1e-301 1e-301 -1e-300 1e-301 1e-301 1e-300 -1e-300 1e-301 0\n"
+    "subnormal 0 0 0 4e-320 0 0 0 4e-320 0  0 0 5e-324 4e-320 0 5e-324 0 4e-320 5e-324\n"
+    "max 0 0 0 1.7976931348623157e308 0 0 0 1.7976931348623157e308 0  0 0 1 1 0 1 0 1 1\n"
+    "collinear-far 0 0 0 4 0 0 0 4 0  100 100 5 101 101 5 102 102 5\n"
+    "collinear-through 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 0 1 1 1\n"
+    "repeated 0 0 0 4 0 0 0 4 0  1 1 0 1 1 0 2 2 1\n"
+    "one-point 0 0 0 4 0 0 0 4 0  1 1 0 1 1 0 1 1 0\n"
+    "both 0 0 0 0 0 0 0 0 0  0 0 0 0 0 0 0 0 0\n";
+
 TEST(HostileInput, ExtremeMagnitudesAreJudgedExactlyAndEveryAlgorithmAnswers) {
-  const auto path = scratch_file("extreme.cases",
-      "huge 0 0 0 1e300 0 0 0 1e300 0  1e299 1e299 -1e300 1e299 1e299 1e300 -1e300 1e299 0\n"
-      "huge-apart 0 0 0 1e300 0 0 0 1e300 0  0 0 1e300 1e300 0 1e300 0 1e300 1e300\n"
-      "tiny 0 0 0 1e-300 0 0 0 1e-300 0  1e-301 1e-301 -1e-300 1e-301 1e-301 1e-300 -1e-300 1e-301 0\n"
-      "subnormal 0 0 0 4e-320 0 0 0 4e-320 0  0 0 5e-324 4e-320 0 5e-324 0 4e-320 5e-324\n"
-      "max 0 0 0 1.7976931348623157e308 0 0 0 1.7976931348623157e308 0  0 0 1 1 0 1 0 1 1\n");
+  const auto path = scratch_file("valid-but-hostile.cases", kValidButHostile);
   auto r = run_tritri("label " + path);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_TRUE(row_starts(r.out, "huge", "huge\t1\tcross"));
@@ -56,12 +64,7 @@ TEST(HostileInput, ExtremeMagnitudesAreJudgedExactlyAndEveryAlgorithmAnswers) {
 }
 
 TEST(HostileInput, ZeroAreaTrianglesAndRepeatedVerticesAreLabelledDegenerate) {
-  const auto path = scratch_file("degenerate.cases",
-      "collinear-far 0 0 0 4 0 0 0 4 0  100 100 5 101 101 5 102 102 5\n"
-      "collinear-through 0 0 0 4 0 0 0 4 0  1 1 -1 1 1 0 1 1 1\n"
-      "repeated 0 0 0 4 0 0 0 4 0  1 1 0 1 1 0 2 2 1\n"
-      "one-point 0 0 0 4 0 0 0 4 0  1 1 0 1 1 0 1 1 0\n"
-      "both 0 0 0 0 0 0 0 0 0  0 0 0 0 0 0 0 0 0\n");
+  const auto path = scratch_file("valid-but-hostile.cases", kValidButHostile);
   auto r = run_tritri("label " + path);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_EQ(label_of(r.out, "collinear-far"), "collinear-far\t0\tdegenerate\tnone\t0\t-\tdegenerate");

@@ -1,75 +1,26 @@
-#include "harness/testing/tritri/testing.hpp"
+// The overlap suite of a function (TRITRI_OVERLAP_CONFORMANCE).
+#include "harness/testing/subject.hpp"
 
 #include "harness/check/check.hpp"
 #include "harness/check/check_output.hpp"
 #include "cases/generator/corpus.hpp"
 #include "cases/util/atomic_file.hpp"
 
-#include <array>
 #include <cstdlib>
 #include <filesystem>
-#include <random>
 
 namespace tritri::testing {
-namespace {
-
-std::string paste_ready(const TrianglePair& pair) {
-  Case c;
-  c.name = "failing";
-  c.pair = pair;
-  return format_case(c, NumberStyle::hex);
-}
-
-constexpr std::array<std::array<int, 3>, 6> kOrders{
-    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-
-Triangle permuted(const Triangle& t, const std::array<int, 3>& o) { return {{t[o[0]], t[o[1]], t[o[2]]}}; }
-
-}  // namespace
 
 void expect_builtin_cases(OverlapFunction overlap) {
-  for (const Case& c : builtin_cases()) {
-    const bool truth = oracle_label(c.pair).overlap;
-    EXPECT_EQ(overlap(c.pair), truth) << "built-in case " << c.name << " (" << c.label("expect").value_or("")
-                                      << "), paste-ready:\n" << paste_ready(c.pair);
-  }
+  expect_cases(subject_of(overlap, "the function"), builtin_cases());
 }
 
 void expect_random_general_position(OverlapFunction overlap) {
-  std::mt19937_64 rng(20261121);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  auto random_triangle = [&] {
-    return Triangle{{Vec3<double>(unit(rng), unit(rng), unit(rng)), Vec3<double>(unit(rng), unit(rng), unit(rng)),
-                     Vec3<double>(unit(rng), unit(rng), unit(rng))}};
-  };
-  int wrong = 0;
-  for (int i = 0; i < 2000 && wrong < 5; ++i) {
-    const TrianglePair pair{random_triangle(), random_triangle()};
-    const bool truth = oracle_label(pair).overlap;
-    if (overlap(pair) != truth) {
-      ++wrong;
-      ADD_FAILURE() << "random pair " << i << ": answered " << !truth << ", oracle " << truth << "\n"
-                    << paste_ready(pair);
-    }
-  }
+  expect_general_position(subject_of(overlap, "the function"));
 }
 
 void expect_order_independence(OverlapFunction overlap) {
-  for (const Case& c : builtin_cases()) {
-    const bool first = overlap(c.pair);
-    for (bool swap : {false, true})
-      for (const auto& o1 : kOrders)
-        for (const auto& o2 : kOrders) {
-          TrianglePair p{permuted(c.pair.t1, o1), permuted(c.pair.t2, o2)};
-          if (swap) p = swapped(p);
-          if (overlap(p) != first) {
-            ADD_FAILURE() << "case " << c.name << ": the answer changes with the order of arguments or vertices\n"
-                          << paste_ready(c.pair) << "\n" << paste_ready(p);
-            goto next_case;
-          }
-        }
-  next_case:;
-  }
+  expect_same_in_any_order(subject_of(overlap, "the function"), builtin_cases());
 }
 
 void check_singular_corpus(OverlapFunction overlap, const std::string& name, const std::string& baseline_path) {
