@@ -183,7 +183,8 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
 }
 
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs) {
+                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs,
+                      const std::vector<Scorecard>& scorecards) {
   nlohmann::json doc;
   doc["schema"] = "tritri-check/2";
   doc["oracle"] = oracle_description();
@@ -240,6 +241,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
                                {"oracle_relation", std::string(to_string(oracle[f.case_index].relation))},
                                {"line", format_case(c)}});
   }
+  if (!scorecards.empty()) doc["scorecards"] = scorecards_json(scorecards);
   out << doc.dump(1) << '\n';
 }
 

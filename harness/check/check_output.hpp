@@ -2,6 +2,7 @@
 #pragma once
 
 #include "harness/check/check.hpp"
+#include "harness/check/scorecard.hpp"
 
 #include <iosfwd>
 #include <set>
@@ -30,8 +31,10 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
 
 // The JSON document described in harness/README.md (schema "tritri-check/2"). With groupings,
 // "families" and each tally's "family" name groups (grouping.hpp), and "group_by" lists them.
+// With scorecards (tritri check --scorecard), "scorecards" holds them (scorecard.hpp).
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs);
+                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs,
+                      const std::vector<Scorecard>& scorecards = {});
 
 // A baseline: the disagreements with the oracle that are known and recorded, one per row:
 //   algorithm <TAB> case <TAB> level <TAB> answer <TAB> oracle

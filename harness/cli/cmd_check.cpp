@@ -71,23 +71,41 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
 
 // The JSON and the baseline the command line asks for, each written atomically.
 void write_outputs(const Args& args, const CheckResult& result, const std::vector<Case>& cases,
-                   const std::vector<OracleRecord>& oracle) {
+                   const std::vector<OracleRecord>& oracle, const std::vector<Scorecard>& scorecards) {
   if (auto json = args.value("--json"))
     write_file_atomically(*json, [&](std::ostream& out) {
       if (args.value("--json-max-failures"))
         write_check_json(out, with_failures_capped(result, cases, args.count("--json-max-failures", 0)), cases,
-                         oracle, args.positional());
+                         oracle, args.positional(), scorecards);
       else
-        write_check_json(out, result, cases, oracle, args.positional());
+        write_check_json(out, result, cases, oracle, args.positional(), scorecards);
     });
   if (auto out_path = args.value("--write-baseline"))
     write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });
+}
+
+// --scorecard: one scorecard per algorithm, printed as one line each.
+std::vector<Scorecard> scorecards_of(const Args& args, const std::vector<const Algorithm*>& algorithms,
+                                     const std::vector<Case>& cases) {
+  ScorecardOptions options;
+  options.max_bases = args.count("--scorecard-bases", options.max_bases);
+  const auto bases = scorecard_bases(cases, options);
+  std::vector<Scorecard> cards;
+  Progress progress("scorecard", algorithms.size());
+  for (const Algorithm* a : algorithms) {
+    cards.push_back(compute_scorecard(*a, bases, options, isolation_options(args)));
+    progress.update(cards.size());
+  }
+  progress.finish();
+  print_scorecards(std::cout, cards, bases.size());
+  return cards;
 }
 
 constexpr const char* kUsageText =
     "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
     "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
     "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
+    "                    [--scorecard] [--scorecard-bases N]\n"
     "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
     "                    FILE...\n\n"
     "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
@@ -125,7 +143,17 @@ constexpr const char* kUsageText =
     "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
     "                       the cases with that value; @base is the case's name up to its\n"
     "                       last '.' (the base construction of a corpus variant). E.g.\n"
-    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n";
+    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n"
+    "  --scorecard          also compute each algorithm's robustness scorecard (JSON\n"
+    "                       \"scorecards\", schema in harness/README.md) and print it: on base\n"
+    "                       cases of the input (cases that are no variant, or the identity\n"
+    "                       symmetry), the share whose answer changes under argument swap,\n"
+    "                       the 36 vertex orders, the 48 signed axis permutations, scaling by\n"
+    "                       2^k and exact translation; touching probes (shared vertex, shared\n"
+    "                       edge, vertex on face, coplanar shared edge) in 72 symmetric forms\n"
+    "                       against the declared boundary; degenerate probes, called even\n"
+    "                       where the algorithm does not accept them; float against double\n"
+    "  --scorecard-bases N  at most N base cases, evenly spaced (default 400)\n";
 
 constexpr const char* kExitStatus =
     "\n"
@@ -136,9 +164,9 @@ constexpr const char* kExitStatus =
 
 int run_check(int argc, char** argv) {
   Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures",
-                  "--group-by"},
+                  "--group-by", "--scorecard-bases"},
                  kRunValuedOptions),
-            with({"--quiet", "--confusion", "--float"}, kRunFlags));
+            with({"--quiet", "--confusion", "--float", "--scorecard"}, kRunFlags));
   if (args.help()) {
     std::cout << kUsageText << kRunOptionsHelp << kExitStatus;
     return kOk;
@@ -168,7 +196,8 @@ int run_check(int argc, char** argv) {
     std::cout << '\n';
     print_failures(std::cout, result, cases, max_failures);
   }
-  write_outputs(args, result, cases, oracle);
+  const auto scorecards = args.flag("--scorecard") ? scorecards_of(args, algorithms, cases) : std::vector<Scorecard>{};
+  write_outputs(args, result, cases, oracle, scorecards);
 
   if (baseline_files.empty()) return kOk;
   const auto comparison = compare_with_baseline(recorded, result, cases);

@@ -11,13 +11,14 @@ The report writes each heading, then calls render.
 """
 
 from . import (asymmetry, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
-               sabharwal15, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
+               sabharwal15, scorecard, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
 
 SECTIONS = [
     header,
     summary,
     correctness,
     asymmetry,
+    scorecard,
     baseline,
     speed_error,
     time_ratio,
