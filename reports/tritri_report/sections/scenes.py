@@ -64,7 +64,7 @@ def scene_rows(ctx, res, skip):
         rows.append([value, c["mode"], "%.0f" % cand, pct(cr, 1), query, ranking(allp, skip) or "-",
                      ranking(anyp, skip) or "-"])
         over = res.get(("scene:" + value, "overlap"), {})
-        wrong_rows.append([value] + ["%d" % over[a][1] if a in over else "-" for a in sorted(over) if a not in skip])
+        wrong_rows.append((value, {a: t[1] for a, t in over.items() if a not in skip}))
         fastest = min((t[0], a) for a, t in over.items() if a not in skip) if over else None
         trav = float(c["traverse_ms"]) + float(c["setup_ms"])
         fcl_share = float(c["fcl_triangle_ms"]) / float(c["collide_all_ms"]) if float(c["collide_all_ms"]) > 0 else None
@@ -150,7 +150,7 @@ def render(run, part):
                     "ranking (any contact)"], rows))
     part.heading("Wrong answers on the scenes")
     algos = sorted({a for (w, l), t in res.items() if w and w.startswith("scene:") for a in t} - skip)
-    part.add(table(["scene/bv"] + algos, wrong_rows))
+    part.add(table(["scene/bv"] + algos, [[v] + ["%d" % w[a] if a in w else "-" for a in algos] for v, w in wrong_rows]))
     part.heading("The triangle test's share of a whole query")
     part.add("Per frame, ms: FCL's set-up (copy, transform, rebuild: AABB, k-DOPs, RSS) and traversal alone, "
              "FCL's own triangle test on the candidates and its whole fcl::collide (all contacts); FCL's "
