@@ -27,6 +27,7 @@ int run_show(int argc, char** argv);
 int run_compare(int argc, char** argv);
 int run_corpus(int argc, char** argv);
 int run_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
+int run_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/
 
 // Algorithms named by --algo (repeatable, or comma-separated); all when none is named. Throws
 // UsageError naming an unknown algorithm and listing the known ones.

@@ -18,6 +18,7 @@ constexpr Command kCommands[] = {
     {"show", "one case: coordinates, the oracle's record and every algorithm's answer", run_show},
     {"corpus", "generate and label the singular-configuration corpus (case files per family)", run_corpus},
     {"bench", "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)", run_bench},
+    {"scene", "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files", run_scene},
     {"compare", "what changed between two check or bench results (with a U test for times)", run_compare},
 };
 

@@ -34,6 +34,24 @@ install(FILES ${PROJECT_SOURCE_DIR}/cases/builtin.cases ${PROJECT_SOURCE_DIR}/ca
               ${PROJECT_SOURCE_DIR}/cases/sabharwal15.cases
         DESTINATION ${CMAKE_INSTALL_DATADIR}/tritri/cases)
 
+# Each library peer built links a library found in its folder; the package finds it again.
+set(TRITRI_PEER_DEPENDENCIES "")
+if(TARGET tritri_algo_open3d)
+  string(APPEND TRITRI_PEER_DEPENDENCIES "find_dependency(Open3D)\n")
+endif()
+if(TARGET tritri_algo_bullet OR TARGET tritri_algo_ode)
+  string(APPEND TRITRI_PEER_DEPENDENCIES "find_dependency(PkgConfig)\n")
+endif()
+if(TARGET tritri_algo_bullet)
+  string(APPEND TRITRI_PEER_DEPENDENCIES "pkg_check_modules(TRITRI_BULLET REQUIRED QUIET IMPORTED_TARGET GLOBAL bullet>=3.24)\n")
+endif()
+if(TARGET tritri_algo_ode)
+  string(APPEND TRITRI_PEER_DEPENDENCIES "pkg_check_modules(TRITRI_ODE REQUIRED QUIET IMPORTED_TARGET GLOBAL ode>=0.16)\n")
+endif()
+if(TARGET tritri_algo_vtk)
+  string(APPEND TRITRI_PEER_DEPENDENCIES "find_dependency(VTK COMPONENTS FiltersGeneral)\n")
+endif()
+
 install(EXPORT tritriTargets NAMESPACE tritri:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/tritri)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/tritriConfig.cmake.in
                               ${CMAKE_BINARY_DIR}/tritriConfig.cmake

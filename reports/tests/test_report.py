@@ -94,9 +94,10 @@ class ReportFromFixture(unittest.TestCase):
         on_disk = {"figures/" + n for n in os.listdir(os.path.join(self.out, "figures"))}
         self.assertEqual(on_disk, set(self.report.figures))
 
-    def test_the_seven_parts_are_there(self):
+    def test_the_parts_are_there(self):
         for heading in ("1 Correctness", "2 Speed against error", "3 Time against intersection ratio",
-                        "4 Stability", "5 The papers' tables", "6 Failure gallery", "7 Provenance"):
+                        "4 Stability", "5 The papers' tables", "6 Scenes: meshes in motion through a BVH broad phase",
+                        "7 Failure gallery", "8 Provenance"):
             self.assertIn("## " + heading + "\n", self.text)
 
     def test_figures_for_each_part(self):
@@ -263,7 +264,7 @@ class ReportFromFixture(unittest.TestCase):
 
     # ---- parts 6 and 7 ----
     def test_gallery_shows_listed_failures_with_coordinates(self):
-        text = section(self.text, "6 Failure gallery")
+        text = section(self.text, "7 Failure gallery")
         failures = self.check["failures"]
         shown = [f for f in failures if "`%s`" % f["case"] in self.text]
         self.assertTrue(shown)
@@ -272,7 +273,7 @@ class ReportFromFixture(unittest.TestCase):
         self.assertIn("three orthographic views", text)
 
     def test_provenance_names_machine_sha_seed_and_hash(self):
-        (header, rows), = tables_in(self.text, "7 Provenance")[:1]
+        (header, rows), = tables_in(self.text, "8 Provenance")[:1]
         values = dict((r[0], r[1]) for r in rows)
         prov = load("provenance.json")
         man = load("corpus.json")

@@ -11,7 +11,7 @@ The report writes each heading, then calls render.
 """
 
 from . import (asymmetry, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
-               sabharwal15, scorecard, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
+               sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
 
 SECTIONS = [
     header,
@@ -29,6 +29,7 @@ SECTIONS = [
     tropp06,
     sabharwal15,
     yuhe13,
+    scenes,
     unquoted,
     gallery,
     provenance,
