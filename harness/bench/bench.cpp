@@ -77,7 +77,7 @@ int run(const Options& options, std::ostream& out) {
       << ") and labelling them with the oracle...\n";
   out.flush();
   WorkloadInput input{{options.pool_size, options.seed}, options.quick, options.family_cases, options.family_source};
-  const Planned planned = build_pools(selected, input);
+  const Planned planned = build_pools_cached(selected, input, options.cache, out);
 
   // ---- the entries: checked and counted before anything is timed ----
   const Entries entries = make_entries(planned.pools, lineup, levels, options);

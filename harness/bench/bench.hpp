@@ -14,6 +14,7 @@
 // (report.hpp), and run() in bench.cpp, which puts them together.
 #pragma once
 
+#include "harness/bench/pool_cache.hpp"
 #include "harness/bench/pools.hpp"
 #include "cases/casefile.hpp"
 #include "harness/run/isolation.hpp"
@@ -57,6 +58,9 @@ struct Options {
   // is reported with the pair responsible and not timed (timing runs in this process).
   IsolationOptions isolation;
   bool list_only = false;          // print the benchmark names and exit
+  // Labelled pools kept between runs (pool_cache.hpp). Off unless asked for: the command
+  // turns it on (--no-cache turns it off), tests and other callers get no files written.
+  PoolCacheOptions cache{false, ""};
 };
 
 // Options for CI: small pools, few repetitions, short runs (seconds in all).

@@ -1,5 +1,6 @@
 #include "harness/bench/entry.hpp"
 
+#include "cases/util/progress.hpp"
 #include "harness/check/judge.hpp"
 #include "harness/run/process_plugin.hpp"
 
@@ -150,8 +151,14 @@ std::string Lineup::reference_row() const { return reference->name + "/" + std::
 Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup, const std::vector<Level>& levels,
                      const Options& options) {
   Entries entries;
+  // Each algorithm runs over each pool in a child process first: minutes on the default pools.
+  // Always shown (quiet_below 0): the step is long even though it counts few items.
+  Progress progress("checking every algorithm on every pool (algorithm x pool)",
+                    pools.size() * lineup.algorithms.size(), 0);
+  std::size_t done = 0;
   for (const PlannedPool& planned : pools) {
     for (const Algorithm* a : lineup.algorithms) {
+      progress.update(done++);
       if (a->kind == Algorithm::Kind::process) {
         if (planned.levels) process_entries(a, planned.pool, levels, entries);
         continue;

@@ -1,5 +1,7 @@
 #include "harness/check/check_output.hpp"
 
+#include "harness/check/baseline_file.hpp"
+
 #include "cases/util/text.hpp"
 
 #include <nlohmann/json.hpp>
@@ -246,8 +248,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
 }
 
 Baseline read_baseline(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open baseline for reading");
+  std::istringstream in(read_possibly_gzipped(path));
   Baseline rows;
   std::string line;
   int number = 0;

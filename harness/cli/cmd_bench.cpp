@@ -11,7 +11,7 @@ constexpr const char* kHelp =
     "usage: tritri bench [--quick] [--algo NAME]... [--level L]... [--workload W]...\n"
     "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
     "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
-    "                    [--json OUT] [--cases FILE]... [--list]\n\n"
+    "                    [--json OUT] [--cases FILE]... [--list] [--cache DIR] [--no-cache]\n\n"
     "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
     "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
     "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
@@ -52,7 +52,12 @@ constexpr const char* kHelp =
     "                     counts); default tritri-bench.json; '-' for none\n"
     "  --cases FILE       case files for the family workloads (repeatable), instead of the\n"
     "                     corpus generator's families\n"
-    "  --list             build the pools, list the benchmarks' names and exit\n\n"
+    "  --list             build the pools, list the benchmarks' names and exit\n"
+    "  --cache DIR        keep the labelled pools in DIR and reuse them on the next run with\n"
+    "                     the same workloads, seed, pool size, cases, generator and oracle\n"
+    "                     (default $XDG_CACHE_HOME/tritri, else ~/.cache/tritri); an entry\n"
+    "                     that is stale or corrupt is rebuilt, never trusted\n"
+    "  --no-cache         build the pools afresh and keep nothing\n\n"
     "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
     "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
     "                     process), a pair that makes no progress for S seconds is a timeout\n"
@@ -93,6 +98,8 @@ bench::Options options_from(const Args& args) {
   options.interleave = !args.flag("--no-interleave");
   options.count_operations = !args.flag("--no-ops");
   options.list_only = args.flag("--list");
+  options.cache.enabled = !args.flag("--no-cache");
+  options.cache.directory = args.value("--cache").value_or("");
   const std::string json = args.value("--json").value_or("tritri-bench.json");
   options.json_path = json == "-" ? "" : json;
   const auto case_files = args.values("--cases");
@@ -108,9 +115,9 @@ bench::Options options_from(const Args& args) {
 int run_bench(int argc, char** argv) {
   Args args(argc, argv,
             with({"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
-                  "--json", "--cases", "--reference"},
+                  "--json", "--cases", "--reference", "--cache"},
                  kRunValuedOptions),
-            with({"--quick", "--no-interleave", "--no-ops", "--list"}, kRunFlags));
+            with({"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"}, kRunFlags));
   if (args.help()) {
     std::cout << kHelp;
     return kOk;

@@ -2,6 +2,7 @@
 #include "cases/util/progress.hpp"
 #include "harness/check/check.hpp"
 #include "harness/check/check_output.hpp"
+#include "harness/check/baseline_file.hpp"
 #include "harness/cli/commands.hpp"
 #include "cases/util/atomic_file.hpp"
 
@@ -69,6 +70,30 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
   }
 }
 
+// Per algorithm "new: N, fixed: M", then the first few new disagreements' cases, paste-ready
+// (hex float: exactly the input that was judged), so a regression can go straight into a case file.
+void print_per_algorithm(const CheckResult& result, const BaselineComparison& comparison,
+                         const std::vector<Case>& cases) {
+  std::map<std::string, std::pair<std::size_t, std::size_t>> counts;
+  for (const Algorithm* a : result.algorithms) counts[a->name];
+  for (const auto& row : comparison.new_failures) ++counts[std::get<0>(row)].first;
+  for (const auto& row : comparison.fixed) ++counts[std::get<0>(row)].second;
+  std::cout << "per algorithm, against the baseline:\n";
+  for (const auto& [name, c] : counts)
+    std::cout << "  " << name << ": new: " << c.first << ", fixed: " << c.second << '\n';
+  if (comparison.new_failures.empty()) return;
+  std::map<std::string, const Case*> by_name;
+  for (const Case& c : cases) by_name.emplace(c.name, &c);
+  constexpr std::size_t kShown = 5;
+  std::cout << "the first new disagreements' cases, paste-ready:\n";
+  for (std::size_t i = 0; i < comparison.new_failures.size() && i < kShown; ++i) {
+    const auto& [algorithm, name, level, answer, expected] = comparison.new_failures[i];
+    std::cout << "# " << algorithm << " " << level << ": answered " << answer << ", oracle " << expected << '\n';
+    if (auto it = by_name.find(name); it != by_name.end())
+      std::cout << format_case(*it->second, NumberStyle::hex) << '\n';
+  }
+}
+
 // The JSON and the baseline the command line asks for, each written atomically.
 void write_outputs(const Args& args, const CheckResult& result, const std::vector<Case>& cases,
                    const std::vector<OracleRecord>& oracle, const std::vector<Scorecard>& scorecards) {
@@ -81,7 +106,7 @@ void write_outputs(const Args& args, const CheckResult& result, const std::vecto
         write_check_json(out, result, cases, oracle, args.positional(), scorecards);
     });
   if (auto out_path = args.value("--write-baseline"))
-    write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });
+    write_baseline_file(*out_path, baseline_of(result, cases));
 }
 
 // --scorecard: one scorecard per algorithm, printed as one line each.
@@ -126,8 +151,10 @@ constexpr const char* kUsageText =
     "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'\n"
     "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
     "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
-    "                       is new; list the recorded ones that no longer occur\n"
-    "  --write-baseline F   record this run's disagreements as a baseline\n"
+    "                       is new; list the recorded ones that no longer occur. Plain TSV,\n"
+    "                       or gzip-compressed TSV (recognised by its content)\n"
+    "  --write-baseline F   record this run's disagreements as a baseline (gzip-compressed\n"
+    "                       when F ends in .gz)\n"
     "  --max-failures N     how many disagreements to print (default 20)\n"
     "  --json-max-failures N  keep only the first N disagreements per algorithm x family x\n"
     "                       level in the JSON (default: all); the tallies count every case\n"
@@ -204,6 +231,7 @@ int run_check(int argc, char** argv) {
   std::cout << '\n';
   print_rows("new disagreements (not in the baseline)", comparison.new_failures, max_failures);
   print_rows("fixed (in the baseline, no longer occurring)", comparison.fixed, max_failures);
+  print_per_algorithm(result, comparison, cases);
   return comparison.new_failures.empty() ? kOk : kFindings;
 }
 

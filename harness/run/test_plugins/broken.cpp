@@ -4,7 +4,8 @@
 //
 // Built in several flavours (compile definitions) to test the loader's refusals, and two
 // well-behaved ones for timing tests: BROKEN_WELL_BEHAVED never misbehaves, and BROKEN_SPIN=N
-// does the same work N times per pair (a known, injected slowdown).
+// does the same work N times per pair (a known, injected slowdown). BROKEN_FLIP_AT=V flips the
+// answer on every pair with a coordinate equal to V: a deliberately changed answer, for the gate.
 #include "tritri/plugin.h"
 
 #include <cstdlib>
@@ -58,6 +59,9 @@ void misbehave(const double* pair) {
       for (int j = 0; j < 18; ++j) copy[j] = p[j];
       answer = boxes_overlap(copy);
     }
+#ifdef BROKEN_FLIP_AT
+    if (has(pairs + 18 * i, BROKEN_FLIP_AT)) answer = !answer;
+#endif
     out[i] = answer ? TRITRI_YES : TRITRI_NO;
   }
 }
