@@ -84,12 +84,33 @@ void write_outputs(const Args& args, const CheckResult& result, const std::vecto
     write_file_atomically(*out_path, [&](std::ostream& out) { write_baseline(out, baseline_of(result, cases)); });
 }
 
+// --cross-check: two exact implementations, the oracle (CGAL Epeck) and the `exact` algorithm
+// (algorithms/exact, written independently from orientation signs), must agree on every case
+// at both levels; any disagreement is a bug in one of them, reported loudly.
+constexpr const char* kCrossCheckAlgorithm = "exact";
+
+int cross_check_verdict(const CheckResult& result, const std::vector<Case>& cases) {
+  std::size_t bad = 0;
+  for (const auto& [key, t] : result.tallies)
+    bad += t.false_positives + t.false_negatives + t.misclassified + t.unsupported + t.crashes + t.timeouts;
+  if (bad == 0) {
+    std::cout << "\ncross-check: the oracle and '" << kCrossCheckAlgorithm << "' agree on all " << cases.size()
+              << " cases at both levels\n";
+    return kOk;
+  }
+  std::cout << "\n*** CROSS-CHECK FAILED: the oracle and '" << kCrossCheckAlgorithm << "' disagree " << bad
+            << " time(s). Both claim to be exact, so this is a bug in one of them. The cases:\n";
+  print_failures(std::cout, result, cases, result.failures.size());
+  std::cerr << "tritri check --cross-check: " << bad << " disagreement(s) between two exact tests\n";
+  return kFindings;
+}
+
 constexpr const char* kUsageText =
     "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
     "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
     "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
     "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
-    "                    FILE...\n\n"
+    "                    [--cross-check] FILE...\n\n"
     "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
     "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
     "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
@@ -125,12 +146,16 @@ constexpr const char* kUsageText =
     "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
     "                       the cases with that value; @base is the case's name up to its\n"
     "                       last '.' (the base construction of a corpus variant). E.g.\n"
-    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n";
+    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n"
+    "  --cross-check        the second judge: check only the 'exact' algorithm (exact by\n"
+    "                       construction, written independently of the oracle) at both\n"
+    "                       levels; any disagreement is a bug in the oracle or in it: all are\n"
+    "                       printed paste-ready and the exit status is 1\n";
 
 constexpr const char* kExitStatus =
     "\n"
-    "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
-    "bad arguments or input.\n";
+    "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared (or, with\n"
+    "--cross-check, any disagreement), 2 on bad arguments or input.\n";
 
 }  // namespace
 
@@ -138,15 +163,19 @@ int run_check(int argc, char** argv) {
   Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures",
                   "--group-by"},
                  kRunValuedOptions),
-            with({"--quiet", "--confusion", "--float"}, kRunFlags));
+            with({"--quiet", "--confusion", "--float", "--cross-check"}, kRunFlags));
   if (args.help()) {
     std::cout << kUsageText << kRunOptionsHelp << kExitStatus;
     return kOk;
   }
   load_external_algorithms(args);
   // Named algorithms, else every built-in one plus every plug-in given.
-  const auto algorithms = args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")))
-                                               : select_algorithms(args.values("--algo"));
+  const bool cross_check = args.flag("--cross-check");
+  if (cross_check && (args.flag("--float") || !args.values("--algo").empty()))
+    throw UsageError("--cross-check checks the 'exact' algorithm on double: no --algo or --float with it");
+  const auto algorithms = cross_check ? select_algorithms({kCrossCheckAlgorithm})
+                          : args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")))
+                                                 : select_algorithms(args.values("--algo"));
   const std::size_t max_failures = args.count("--max-failures", 20);
   // Read the baselines before the (possibly long) run, so a wrong path fails at once.
   Baseline recorded;
@@ -169,6 +198,7 @@ int run_check(int argc, char** argv) {
     print_failures(std::cout, result, cases, max_failures);
   }
   write_outputs(args, result, cases, oracle);
+  if (cross_check) return cross_check_verdict(result, cases);
 
   if (baseline_files.empty()) return kOk;
   const auto comparison = compare_with_baseline(recorded, result, cases);
