@@ -2,6 +2,7 @@
 // disagreements.
 #include "harness/check/check.hpp"
 #include "harness/check/check_output.hpp"
+#include "harness/check/judge.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,6 +156,20 @@ TEST(CheckScoring, ConfusionCountsEveryCaseOnceInItsCell) {
   EXPECT_EQ(cells, scored);
   EXPECT_EQ(diagonal, 5u);  // the built-in cross cases
   EXPECT_EQ(total(r, "cross").misclassified, scored - diagonal);
+}
+
+TEST(CheckScoring, DegenerateAnswersAreJudgedByTheirDimension) {
+  // An exact algorithm answers a zero-area pair as the oracle labels it: {degenerate, dimension}.
+  Truth truth;
+  truth.overlap = true;
+  truth.degenerate = true;
+  truth.relation = Relation::degenerate;
+  truth.dimension = Dimension::point;
+  EXPECT_EQ(judge_relation({Relation::degenerate, Dimension::point}, truth).verdict, Verdict::right);
+  EXPECT_EQ(judge_relation({Relation::degenerate, Dimension::segment}, truth).verdict, Verdict::wrong);
+  EXPECT_EQ(judge_relation({Relation::degenerate, Dimension::none}, truth).verdict, Verdict::wrong);
+  EXPECT_EQ(implied_overlap(RelationAnswer{Relation::degenerate, Dimension::point}), Overlap::yes);
+  EXPECT_EQ(implied_overlap(RelationAnswer{Relation::degenerate, Dimension::none}), Overlap::no);
 }
 
 TEST(CheckScoring, DimensionOnlyAnswersAreConfusedByDimension) {

@@ -9,7 +9,7 @@ std::string dimension_word(Dimension d) { return "dim:" + std::string(to_string(
 
 Overlap implied_overlap(const RelationAnswer& a) {
   if (a.relation == Relation::unsupported) return Overlap::unsupported;
-  const Dimension d = a.relation == Relation::unknown ? a.dimension : dimension_of(a.relation);
+  const Dimension d = a.relation == Relation::unknown || a.relation == Relation::degenerate ? a.dimension : dimension_of(a.relation);
   if (d == Dimension::unknown) return Overlap::unsupported;
   return d == Dimension::none ? Overlap::no : Overlap::yes;
 }
@@ -29,7 +29,7 @@ RelationVerdict judge_relation(const RelationAnswer& r, const Truth& truth) {
   const bool by_dimension = r.relation == Relation::unknown || truth.degenerate;
   RelationVerdict v;
   if (by_dimension) {
-    const Dimension said = r.relation == Relation::unknown ? r.dimension : dimension_of(r.relation);
+    const Dimension said = r.relation == Relation::unknown || r.relation == Relation::degenerate ? r.dimension : dimension_of(r.relation);
     v.said = dimension_word(said);
     v.expected = dimension_word(truth.dimension);
     v.verdict = said == truth.dimension ? Verdict::right : Verdict::wrong;

@@ -126,13 +126,34 @@ std::vector<Scorecard> scorecards_of(const Args& args, const std::vector<const A
   return cards;
 }
 
+// --cross-check: two exact implementations, the oracle (CGAL Epeck) and the `exact` algorithm
+// (algorithms/exact, written independently from orientation signs), must agree on every case
+// at both levels; any disagreement is a bug in one of them, reported loudly.
+constexpr const char* kCrossCheckAlgorithm = "exact";
+
+int cross_check_verdict(const CheckResult& result, const std::vector<Case>& cases) {
+  std::size_t bad = 0;
+  for (const auto& [key, t] : result.tallies)
+    bad += t.false_positives + t.false_negatives + t.misclassified + t.unsupported + t.crashes + t.timeouts;
+  if (bad == 0) {
+    std::cout << "\ncross-check: the oracle and '" << kCrossCheckAlgorithm << "' agree on all " << cases.size()
+              << " cases at both levels\n";
+    return kOk;
+  }
+  std::cout << "\n*** CROSS-CHECK FAILED: the oracle and '" << kCrossCheckAlgorithm << "' disagree " << bad
+            << " time(s). Both claim to be exact, so this is a bug in one of them. The cases:\n";
+  print_failures(std::cout, result, cases, result.failures.size());
+  std::cerr << "tritri check --cross-check: " << bad << " disagreement(s) between two exact tests\n";
+  return kFindings;
+}
+
 constexpr const char* kUsageText =
     "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
     "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
     "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
     "                    [--scorecard] [--scorecard-bases N]\n"
     "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
-    "                    FILE...\n\n"
+    "                    [--cross-check] FILE...\n\n"
     "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
     "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
     "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
@@ -180,12 +201,17 @@ constexpr const char* kUsageText =
     "                       edge, vertex on face, coplanar shared edge) in 72 symmetric forms\n"
     "                       against the declared boundary; degenerate probes, called even\n"
     "                       where the algorithm does not accept them; float against double\n"
-    "  --scorecard-bases N  at most N base cases, evenly spaced (default 400)\n";
+    "  --scorecard-bases N  at most N base cases, evenly spaced (default 400)\n"
+
+    "  --cross-check        the second judge: check only the 'exact' algorithm (exact by\n"
+    "                       construction, written independently of the oracle) at both\n"
+    "                       levels; any disagreement is a bug in the oracle or in it: all are\n"
+    "                       printed paste-ready and the exit status is 1\n";
 
 constexpr const char* kExitStatus =
     "\n"
-    "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared, 2 on\n"
-    "bad arguments or input.\n";
+    "Exit status: 0, or 1 when a baseline was given and a new disagreement appeared (or, with\n"
+    "--cross-check, any disagreement), 2 on bad arguments or input.\n";
 
 }  // namespace
 
@@ -193,15 +219,19 @@ int run_check(int argc, char** argv) {
   Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures",
                   "--group-by", "--scorecard-bases"},
                  kRunValuedOptions),
-            with({"--quiet", "--confusion", "--float", "--scorecard"}, kRunFlags));
+            with({"--quiet", "--confusion", "--float", "--scorecard", "--cross-check"}, kRunFlags));
   if (args.help()) {
     std::cout << kUsageText << kRunOptionsHelp << kExitStatus;
     return kOk;
   }
   load_external_algorithms(args);
   // Named algorithms, else every built-in one plus every plug-in given.
-  const auto algorithms = args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")))
-                                               : select_algorithms(args.values("--algo"));
+  const bool cross_check = args.flag("--cross-check");
+  if (cross_check && (args.flag("--float") || !args.values("--algo").empty()))
+    throw UsageError("--cross-check checks the 'exact' algorithm on double: no --algo or --float with it");
+  const auto algorithms = cross_check ? select_algorithms({kCrossCheckAlgorithm})
+                          : args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")))
+                                                 : select_algorithms(args.values("--algo"));
   const std::size_t max_failures = args.count("--max-failures", 20);
   // Read the baselines before the (possibly long) run, so a wrong path fails at once.
   Baseline recorded;
@@ -225,6 +255,7 @@ int run_check(int argc, char** argv) {
   }
   const auto scorecards = args.flag("--scorecard") ? scorecards_of(args, algorithms, cases) : std::vector<Scorecard>{};
   write_outputs(args, result, cases, oracle, scorecards);
+  if (cross_check) return cross_check_verdict(result, cases);
 
   if (baseline_files.empty()) return kOk;
   const auto comparison = compare_with_baseline(recorded, result, cases);

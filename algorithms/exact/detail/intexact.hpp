@@ -1,0 +1,183 @@
+// The production exact engine's determinants: signs of
+//   det3(A0,A1, B0,B1, C0,C1) = det[A1-A0, B1-B0, C1-C0]   (orient3d is det3(a,b, a,c, a,d))
+//   det2(a, b, c; i, j)       = (b-a)_i (c-a)_j - (b-a)_j (c-a)_i
+// in integer arithmetic, for any finite doubles, without allocation. The integer types and the
+// reasons for the three paths (fast, middle, wide) are in intarith.hpp.
+#pragma once
+
+#include "algorithms/exact/detail/intarith.hpp"
+
+#include <cstdint>
+#include <cstring>
+
+namespace tritri::exactsimd::intexact {
+
+// The binary exponents of x's leading and last set bits (x finite, non-zero): |x| < 2^(lead+1)
+// and x is a multiple of 2^last.
+inline void bit_range(double x, int& lead, int& last) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
+  int e0;  // exponent of mantissa bit 0
+  if (biased == 0) {
+    e0 = -1074;
+  } else {
+    mant |= std::uint64_t{1} << 52;
+    e0 = biased - 1075;
+  }
+  last = e0 + __builtin_ctzll(mant);
+  lead = e0 + 63 - __builtin_clzll(mant);
+}
+
+// ---------------------------------------------------------------- the determinants
+
+// sign det[A1-A0, B1-B0, C1-C0]; p: the six points (3 doubles each), finite.
+inline int det3_sign(const double* const p[6]) {
+  // structural zeros
+  for (int k = 0; k < 3; ++k) {  // a column of equal coordinates
+    if (p[0][k] == p[1][k] && p[2][k] == p[3][k] && p[4][k] == p[5][k]) return ++counts().structural, 0;
+  }
+  for (int r = 0; r < 3; ++r) {  // a zero row
+    const double* a = p[2 * r];
+    const double* b = p[2 * r + 1];
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) return ++counts().structural, 0;
+  }
+  auto same = [](const double* a, const double* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; };
+  for (int r = 0; r < 3; ++r)  // two rows from the same two points
+    for (int t = r + 1; t < 3; ++t)
+      if (same(p[2 * r], p[2 * t]) && same(p[2 * r + 1], p[2 * t + 1])) return ++counts().structural, 0;
+
+  {  // fast path: every axis converts to integers below 2^61
+    std::int64_t x[3][6];  // x[axis][point]
+    bool fast = true;
+    for (int k = 0; k < 3 && fast; ++k) {
+      const double* v[6] = {&p[0][k], &p[1][k], &p[2][k], &p[3][k], &p[4][k], &p[5][k]};
+      fast = axis_to_int61(v, 6, x[k]);
+    }
+    if (fast) {
+      ++counts().fast3;
+      std::int64_t d[3][3];  // d[row][axis], |d| < 2^62
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k) d[r][k] = x[k][2 * r + 1] - x[k][2 * r];
+      I192 acc{{0, 0, 0}};
+      for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        const i128 m = static_cast<i128>(d[1][i]) * d[2][j] - static_cast<i128>(d[1][j]) * d[2][i];  // |m| < 2^125
+        acc = add192(acc, mul_128_64(m, d[0][k]));                                               // |acc| < 2^189
+      }
+      return sign192(acc);
+    }
+  }
+  Split s[6][3];
+  int q[3], top[3];
+  for (int k = 0; k < 3; ++k) {
+    q[k] = 100000;
+    top[k] = -100000;
+    for (int i = 0; i < 6; ++i) {
+      s[i][k] = split_double(p[i][k]);
+      if (s[i][k].mant == 0) continue;
+      if (s[i][k].exp < q[k]) q[k] = s[i][k].exp;
+      if (s[i][k].top > top[k]) top[k] = s[i][k].top;
+    }
+    if (top[k] == -100000) q[k] = 0, top[k] = 0;
+  }
+  if (top[0] - q[0] <= 125 && top[1] - q[1] <= 125 && top[2] - q[2] <= 125) {
+    // middle path: |X| < 2^125, differences < 2^126 (2 limbs), cross terms < 2^253 (4 limbs),
+    // the dot product < 2^381 (6 limbs)
+    ++counts().middle3;
+    Fixed<2> d[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) d[r][k] = fixed_sub(fixed2_from(s[2 * r + 1][k], q[k]), fixed2_from(s[2 * r][k], q[k]));
+    Fixed<6> acc{{0, 0, 0, 0, 0, 0}};
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const Fixed<4> m = fixed_sub(fixed_mul(d[1][i], d[2][j]), fixed_mul(d[1][j], d[2][i]));
+      acc = fixed_add(acc, fixed_mul(m, d[0][k]));
+    }
+    return fixed_sign(acc);
+  }
+  ++counts().wide3;
+  Big d[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) {
+      Big a, b;
+      big_from(a, s[2 * r + 1][k], q[k]);
+      big_from(b, s[2 * r][k], q[k]);
+      big_add(a, b, true, d[r][k]);
+    }
+  Big buf[2], m1, m2, m, t;
+  Big* acc = &buf[0];
+  Big* next = &buf[1];
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    big_mul(d[1][i], d[2][j], m1);
+    big_mul(d[1][j], d[2][i], m2);
+    big_add(m1, m2, true, m);
+    big_mul(m, d[0][k], t);
+    big_add(*acc, t, false, *next);  // no copy of the limbs: swap the roles of the buffers
+    Big* swap = acc;
+    acc = next;
+    next = swap;
+  }
+  return acc->n == 0 ? 0 : (acc->neg ? -1 : 1);
+}
+
+// sign of (b-a)_i (c-a)_j - (b-a)_j (c-a)_i.
+inline int det2_sign(const double* a, const double* b, const double* c, int i, int j) {
+  if ((a[i] == b[i] && a[j] == b[j]) || (a[i] == c[i] && a[j] == c[j]) || (b[i] == c[i] && b[j] == c[j]) ||
+      (a[i] == b[i] && a[i] == c[i]) || (a[j] == b[j] && a[j] == c[j]))
+    return ++counts().structural, 0;
+  {
+    std::int64_t x[2][3];
+    const double* vi[3] = {&a[i], &b[i], &c[i]};
+    const double* vj[3] = {&a[j], &b[j], &c[j]};
+    if (axis_to_int61(vi, 3, x[0]) && axis_to_int61(vj, 3, x[1])) {
+      ++counts().fast2;
+      const std::int64_t bi = x[0][1] - x[0][0], bj = x[1][1] - x[1][0];
+      const std::int64_t ci = x[0][2] - x[0][0], cj = x[1][2] - x[1][0];
+      const i128 v = static_cast<i128>(bi) * cj - static_cast<i128>(bj) * ci;
+      return (v > 0) - (v < 0);
+    }
+  }
+  Split s[3][2];
+  int q[2], top[2];
+  const double* pts[3] = {a, b, c};
+  for (int k = 0; k < 2; ++k) {
+    const int axis = k == 0 ? i : j;
+    q[k] = 100000;
+    top[k] = -100000;
+    for (int v = 0; v < 3; ++v) {
+      s[v][k] = split_double(pts[v][axis]);
+      if (s[v][k].mant == 0) continue;
+      if (s[v][k].exp < q[k]) q[k] = s[v][k].exp;
+      if (s[v][k].top > top[k]) top[k] = s[v][k].top;
+    }
+    if (top[k] == -100000) q[k] = 0, top[k] = 0;
+  }
+  if (top[0] - q[0] <= 125 && top[1] - q[1] <= 125) {
+    ++counts().middle2;
+    const Fixed<2> bi = fixed_sub(fixed2_from(s[1][0], q[0]), fixed2_from(s[0][0], q[0]));
+    const Fixed<2> bj = fixed_sub(fixed2_from(s[1][1], q[1]), fixed2_from(s[0][1], q[1]));
+    const Fixed<2> ci = fixed_sub(fixed2_from(s[2][0], q[0]), fixed2_from(s[0][0], q[0]));
+    const Fixed<2> cj = fixed_sub(fixed2_from(s[2][1], q[1]), fixed2_from(s[0][1], q[1]));
+    return fixed_sign(fixed_sub(fixed_mul(bi, cj), fixed_mul(bj, ci)));
+  }
+  ++counts().wide2;
+  Big bi, bj, ci, cj, x, y, p1, p2, r;
+  auto diff = [&](int v, int k, Big& out) {
+    big_from(x, s[v][k], q[k]);
+    big_from(y, s[0][k], q[k]);
+    big_add(x, y, true, out);
+  };
+  diff(1, 0, bi);
+  diff(1, 1, bj);
+  diff(2, 0, ci);
+  diff(2, 1, cj);
+  big_mul(bi, cj, p1);
+  big_mul(bj, ci, p2);
+  big_add(p1, p2, true, r);
+  return r.n == 0 ? 0 : (r.neg ? -1 : 1);
+}
+
+}  // namespace tritri::exactsimd::intexact

@@ -1,0 +1,698 @@
+// Unit tests of exactsimd: the error bounds against exact rational arithmetic on adversarial
+// input, the grid-exactness claim, the three exact engines against each other, every decision
+// path of the batch (forced and observed through the statistics), every branch of the exact
+// classification against the oracle, and the built-in cases in all 72 orders.
+#include "algorithms/exact/exact.hpp"
+#include "algorithms/exact/tests/expansions.hpp"
+#include "algorithms/exact/tests/gen.hpp"
+#include "cases/casefile.hpp"
+#include "cases/oracle/oracle.hpp"
+
+#include <gmp.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace tritri;
+using namespace exactsimd_test;
+namespace ex = tritri::exactsimd;
+
+namespace {
+
+// ---------------------------------------------------------------- exact rationals
+
+struct Q {
+  mpq_t v;
+  Q() { mpq_init(v); }
+  explicit Q(double d) {
+    mpq_init(v);
+    mpq_set_d(v, d);
+  }
+  Q(const Q& o) {
+    mpq_init(v);
+    mpq_set(v, o.v);
+  }
+  Q& operator=(const Q& o) {
+    mpq_set(v, o.v);
+    return *this;
+  }
+  ~Q() { mpq_clear(v); }
+};
+Q operator-(const Q& a, const Q& b) {
+  Q r;
+  mpq_sub(r.v, a.v, b.v);
+  return r;
+}
+Q operator+(const Q& a, const Q& b) {
+  Q r;
+  mpq_add(r.v, a.v, b.v);
+  return r;
+}
+Q operator*(const Q& a, const Q& b) {
+  Q r;
+  mpq_mul(r.v, a.v, b.v);
+  return r;
+}
+Q qabs(const Q& a) {
+  Q r;
+  mpq_abs(r.v, a.v);
+  return r;
+}
+int cmp(const Q& a, const Q& b) { return mpq_cmp(a.v, b.v); }
+double to_d(const Q& a) { return mpq_get_d(a.v); }
+
+// exact det[a1-a0, b1-b0, c1-c0]
+Q det3_exact(const double* a0, const double* a1, const double* b0, const double* b1, const double* c0,
+             const double* c1) {
+  Q u[3], v[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = Q(a1[k]) - Q(a0[k]);
+    v[k] = Q(b1[k]) - Q(b0[k]);
+    w[k] = Q(c1[k]) - Q(c0[k]);
+  }
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+Q det2_exact(const double* a, const double* b, const double* c, int i, int j) {
+  return (Q(b[i]) - Q(a[i])) * (Q(c[j]) - Q(a[j])) - (Q(b[j]) - Q(a[j])) * (Q(c[i]) - Q(a[i]));
+}
+
+int sign(const Q& q) { return mpq_sgn(q.v); }
+
+void coords(const TrianglePair& p, double (&c)[18]) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      c[3 * i + k] = p.t1[i][k];
+      c[9 + 3 * i + k] = p.t2[i][k];
+    }
+}
+
+// ---------------------------------------------------------------- adversarial inputs
+
+// Nearly coplanar six points: two triangles in (almost) one plane through a random point, at
+// magnitude 2^scale, translated by 2^shift, with the last vertex nudged by a few ulps or by
+// 2^-k of the size. Their orientations are tiny: the errors are as large as they get.
+TrianglePair near_flat(GenRng& r, int scale, int shift) {
+  const V o = cube(r, 1) * std::ldexp(1.0, shift);
+  const V e1 = cube(r, 1), e2 = cube(r, 1);
+  TrianglePair p;
+  for (Triangle* t : {&p.t1, &p.t2})
+    for (auto& v : t->v) {
+      const double a = r.uniform(-1, 1), b = r.uniform(-1, 1);
+      v = o + std::ldexp(1.0, scale) * (a * e1 + b * e2);
+    }
+  p.t2[2] = p.t2[2] + std::ldexp(1.0, scale - static_cast<int>(r.integer(20, 60))) * cube(r, 1);
+  return p;
+}
+
+// All 4-point selections (a, b, c, d) of the pair's six points that the kernel or the
+// classification can evaluate: every ordered choice of a distinct base a and three others.
+template <class F>
+void each_det3(const double (&c)[18], F f) {
+  for (int a = 0; a < 6; ++a)
+    for (int b = 0; b < 6; ++b)
+      for (int x = 0; x < 6; ++x)
+        for (int d = 0; d < 6; ++d) {
+          if (a == b || a == x || a == d || b == x || b == d || x == d) continue;
+          f(c + 3 * a, c + 3 * b, c + 3 * x, c + 3 * d);
+        }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- layout
+
+TEST(Layout, TrianglePairIsEighteenPackedDoubles) {
+  static_assert(sizeof(TrianglePair) == 18 * sizeof(double));
+  TrianglePair p;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      p.t1[i][k] = 3 * i + k;
+      p.t2[i][k] = 9 + 3 * i + k;
+    }
+  const double* d = reinterpret_cast<const double*>(&p);
+  for (int s = 0; s < 18; ++s) EXPECT_EQ(d[s], s);
+}
+
+// ---------------------------------------------------------------- error bounds
+
+// The batch kernel's semi-static bound B (pair_bound3: extents of the six points) against the
+// exact error of every det3 of four of the points evaluated as the kernel evaluates it.
+TEST(Bounds, SemiStaticDet3BoundHoldsOnNearlyFlatPairs) {
+  GenRng r(1);
+  double worst = 0.0;
+  long checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int scale = static_cast<int>(r.integer(-300, 300));
+    const int shift = scale + static_cast<int>(r.integer(-4, 30));
+    const TrianglePair p = near_flat(r, scale, shift);
+    double c[18];
+    coords(p, c);
+    const double b = ex::pair_bound3(c);
+    if (!std::isfinite(b)) continue;
+    each_det3(c, [&](const double* a, const double* bb, const double* x, const double* d) {
+      if ((checked++ % 7) != 0) return;  // a seventh of the 360 selections per pair
+      const ex::Det3 v = ex::det3_eval(a, d, a, bb, a, x);
+      const Q err = qabs(Q(v.value) - det3_exact(a, d, a, bb, a, x));
+      ASSERT_LE(cmp(err, Q(b)), 0) << "scale " << scale;
+      worst = std::max(worst, to_d(err) / b);
+    });
+  }
+  std::printf("    worst |error| / B over the selections: %.3g\n", worst);
+  EXPECT_GT(worst, 0.0);
+}
+
+// The per-call semi-static bound and the dynamic (permanent) bound of Filtered.
+TEST(Bounds, PerCallAndDynamicDet3BoundsHold) {
+  GenRng r(2);
+  double worst_static = 0.0, worst_dynamic = 0.0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int scale = static_cast<int>(r.integer(-320, 320));
+    const TrianglePair p = near_flat(r, scale, scale + static_cast<int>(r.integer(-10, 40)));
+    double c[18];
+    coords(p, c);
+    const double* q[6];
+    for (int k = 0; k < 6; ++k) q[k] = c + 3 * r.integer(0, 5);
+    const ex::Det3 v = ex::det3_eval(q[0], q[1], q[2], q[3], q[4], q[5]);
+    const Q err = qabs(Q(v.value) - det3_exact(q[0], q[1], q[2], q[3], q[4], q[5]));
+    if (std::max(v.x, std::max(v.y, v.z)) > ex::bound::kMax3) continue;
+    const double bs = ex::bound::kRel3 * v.x * v.y * v.z + ex::bound::kAbs3;
+    const double bd = ex::bound::kPerm3 * v.perm + ex::bound::kAbs3;
+    ASSERT_LE(cmp(err, Q(bs)), 0);
+    ASSERT_LE(cmp(err, Q(bd)), 0);
+    worst_static = std::max(worst_static, to_d(err) / bs);
+    worst_dynamic = std::max(worst_dynamic, to_d(err) / bd);
+  }
+  std::printf("    worst |error| / bound: per-call semi-static %.3g, dynamic %.3g\n", worst_static, worst_dynamic);
+}
+
+TEST(Bounds, Det2BoundsHold) {
+  GenRng r(3);
+  double worst = 0.0, worst_dyn = 0.0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int scale = static_cast<int>(r.integer(-480, 480));
+    const V o = cube(r, 1) * std::ldexp(1.0, scale + static_cast<int>(r.integer(-4, 40)));
+    const V d = cube(r, 1);
+    V pts[3];
+    for (auto& pt : pts) pt = o + std::ldexp(1.0, scale) * r.uniform(-1, 1) * d;  // nearly collinear
+    pts[2] = pts[2] + std::ldexp(1.0, scale - static_cast<int>(r.integer(10, 60))) * cube(r, 1);
+    const int i = static_cast<int>(r.integer(0, 2)), j = (i + 1 + static_cast<int>(r.integer(0, 1))) % 3;
+    const double* a = pts[0].data();
+    const double* b = pts[1].data();
+    const double* c = pts[2].data();
+    const double v = ex::det2_value(a, b, c, i, j);
+    const Q err = qabs(Q(v) - det2_exact(a, b, c, i, j));
+    // per-call semi-static (Filtered::o2) and the shared coplanar form (extents of the points)
+    const double xi = std::max(std::fabs(b[i] - a[i]), std::fabs(c[i] - a[i]));
+    const double xj = std::max(std::fabs(b[j] - a[j]), std::fabs(c[j] - a[j]));
+    if (std::max(xi, xj) > ex::bound::kMax2) continue;
+    const double bs = ex::bound::kRel2 * xi * xj + ex::bound::kAbs2;
+    const double lo_i = std::min({a[i], b[i], c[i]}), hi_i = std::max({a[i], b[i], c[i]});
+    const double lo_j = std::min({a[j], b[j], c[j]}), hi_j = std::max({a[j], b[j], c[j]});
+    const double be = ex::det2_bound(hi_i - lo_i, hi_j - lo_j);
+    const double q1 = (b[i] - a[i]) * (c[j] - a[j]), q2 = (b[j] - a[j]) * (c[i] - a[i]);
+    const double bd = ex::bound::kPerm2 * (std::fabs(q1) + std::fabs(q2)) + ex::bound::kAbs2;
+    ASSERT_LE(cmp(err, Q(bs)), 0);
+    ASSERT_LE(cmp(err, Q(be)), 0);
+    ASSERT_LE(cmp(err, Q(bd)), 0);
+    worst = std::max(worst, to_d(err) / bs);
+    worst_dyn = std::max(worst_dyn, to_d(err) / bd);
+  }
+  std::printf("    worst |error| / bound: semi-static %.3g, dynamic %.3g\n", worst, worst_dyn);
+}
+
+// Underflow: coordinates down to subnormals. The relative bound alone would fail here; the
+// absolute term kAbs3 (and routing to exact) keeps every certain sign right.
+TEST(Bounds, TinyAndSubnormalMagnitudesNeverGiveAWrongCertainSign) {
+  GenRng r(4);
+  long certain = 0, total = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int scale = static_cast<int>(r.integer(-1074, -250));
+    TrianglePair p = scaled(r.coin() ? small_int_pair(r, 5) : random_pair(r), scale);
+    if (r.coin()) p = perturbed(p, r);
+    double c[18];
+    coords(p, c);
+    const double b = ex::pair_bound3(c);
+    each_det3(c, [&](const double* a, const double* bb, const double* x, const double* d) {
+      if ((total++ % 11) != 0) return;
+      const ex::Det3 v = ex::det3_eval(a, d, a, bb, a, x);
+      const int s = (v.value > b) - (v.value < -b);
+      const Q exact = det3_exact(a, d, a, bb, a, x);
+      if (s != 0) {
+        ++certain;
+        ASSERT_EQ(s, sign(exact));
+      }
+      const Q err = qabs(Q(v.value) - exact);
+      if (std::isfinite(b)) ASSERT_LE(cmp(err, Q(b)), 0);
+      // the dynamic bound and Filtered as a whole
+      const double* q[6] = {a, d, a, bb, a, x};
+      ASSERT_EQ(ex::Filtered::d3(q[0], q[1], q[2], q[3], q[4], q[5]), sign(exact));
+    });
+  }
+  std::printf("    certain signs at tiny magnitudes: %ld\n", certain);
+}
+
+// One axis at tiny (even subnormal) magnitudes, the others huge: a bound computed as
+// K·Ex·Ey·Ez would lose Ex to underflow and then be magnified by Ey·Ez; raising each extent to
+// at least kMin3 (kMin2) keeps every bound valid. Checked against exact arithmetic.
+TEST(Bounds, AnisotropicMagnitudes) {
+  GenRng r(12);
+  double worst3 = 0.0, worst2 = 0.0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    TrianglePair p = near_flat(r, 0, static_cast<int>(r.integer(0, 3)));
+    const int small = static_cast<int>(r.integer(-1074, -700)), big = static_cast<int>(r.integer(100, 330));
+    const int axis = static_cast<int>(r.integer(0, 2));
+    for (Triangle* t : {&p.t1, &p.t2})
+      for (auto& v : t->v)
+        for (int k = 0; k < 3; ++k) v[k] = std::ldexp(v[k], k == axis ? small : big);
+    double c[18];
+    coords(p, c);
+    const double b = ex::pair_bound3(c);
+    each_det3(c, [&](const double* a, const double* bb, const double* x, const double* d) {
+      if (r.integer(0, 30) != 0) return;
+      const ex::Det3 v = ex::det3_eval(a, d, a, bb, a, x);
+      const Q exact = det3_exact(a, d, a, bb, a, x);
+      const Q err = qabs(Q(v.value) - exact);
+      if (std::isfinite(b)) {
+        ASSERT_LE(cmp(err, Q(b)), 0) << "axis " << axis << " small " << small << " big " << big;
+        worst3 = std::max(worst3, to_d(err) / b);
+      }
+      ASSERT_EQ(ex::Filtered::d3(a, d, a, bb, a, x), sign(exact));
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        const double v2 = ex::det2_value(a, bb, x, i, j);
+        const Q e2 = qabs(Q(v2) - det2_exact(a, bb, x, i, j));
+        const double xi = std::max(std::fabs(bb[i] - a[i]), std::fabs(x[i] - a[i]));
+        const double xj = std::max(std::fabs(bb[j] - a[j]), std::fabs(x[j] - a[j]));
+        const double b2 = ex::det2_bound(xi, xj);
+        if (std::isfinite(b2)) {
+          ASSERT_LE(cmp(e2, Q(b2)), 0);
+          worst2 = std::max(worst2, to_d(e2) / b2);
+        }
+        ASSERT_EQ(ex::Filtered::o2(a, bb, x, i, j), sign(det2_exact(a, bb, x, i, j)));
+      }
+    });
+  }
+  std::printf("    worst |error| / bound: det3 %.3g, det2 %.3g\n", worst3, worst2);
+}
+
+// Overflow and the range limits: extents beyond kMax3 give an infinite bound (exact path).
+TEST(Bounds, HugeMagnitudesAreRoutedToExact) {
+  double c[18];
+  for (int k = 0; k < 18; ++k) c[k] = (k % 5) * 0x1p334;
+  EXPECT_TRUE(std::isinf(ex::pair_bound3(c)));
+  for (int k = 0; k < 18; ++k) c[k] = (k % 2 ? 1.7e308 : -1.7e308);
+  EXPECT_TRUE(std::isinf(ex::pair_bound3(c)));
+  for (int k = 0; k < 18; ++k) c[k] = (k % 3) * 0x1p332;
+  EXPECT_TRUE(std::isfinite(ex::pair_bound3(c)));
+  GenRng r(5);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const TrianglePair p = scaled(r.coin() ? small_int_pair(r, 5) : random_pair(r), static_cast<int>(r.integer(300, 1020)));
+    double cc[18];
+    coords(p, cc);
+    const double* q[6];
+    for (int k = 0; k < 6; ++k) q[k] = cc + 3 * r.integer(0, 5);
+    ASSERT_EQ(ex::Filtered::d3(q[0], q[1], q[2], q[3], q[4], q[5]), sign(det3_exact(q[0], q[1], q[2], q[3], q[4], q[5])));
+  }
+}
+
+// The parallel certificate of the relation kernel: |fl(s_b - s_a)| > 3B implies that the exact
+// distances differ, whenever |s - S| <= B for both.
+TEST(Bounds, ParallelCertificate) {
+  GenRng r(6);
+  for (int trial = 0; trial < 3000; ++trial) {
+    TrianglePair p = random_pair(r);
+    // T1 nearly parallel to T2: T1 = T2 translated along its normal, one vertex nudged
+    const V n = (p.t2[1] - p.t2[0]).cross(p.t2[2] - p.t2[0]);
+    for (int i = 0; i < 3; ++i) p.t1[i] = p.t2[i] + 0.01 * n;
+    p.t1[1][static_cast<int>(r.integer(0, 2))] += std::ldexp(1.0, -static_cast<int>(r.integer(30, 60)));
+    double c[18];
+    coords(p, c);
+    const double b = ex::pair_bound3(c);
+    const double* a2 = c + 9;
+    const double* b2 = c + 12;
+    const double* c2 = c + 15;
+    const double sa = ex::det3_eval(a2, c, a2, b2, a2, c2).value, sb = ex::det3_eval(a2, c + 3, a2, b2, a2, c2).value;
+    if (std::fabs(sb - sa) > 3 * b) {
+      EXPECT_NE(sign(det3_exact(a2, b2, a2, c2, c, c + 3)), 0);
+    }
+  }
+}
+
+// ---------------------------------------------------------------- the grid case
+
+// On a pair that passes grid_exact, every det3/det2 evaluates exactly in double; pairs with one
+// more bit of span are rejected by the test.
+TEST(Grid, PlainArithmeticIsExactOnTheGrid) {
+  GenRng r(7);
+  long passed = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int bits = static_cast<int>(r.integer(1, 15));
+    const int scale = static_cast<int>(r.integer(-340, 280));
+    const std::int64_t m = (std::int64_t{1} << bits) - 1;
+    TrianglePair p;
+    for (Triangle* t : {&p.t1, &p.t2})
+      for (auto& v : t->v)
+        for (int k = 0; k < 3; ++k) v[k] = std::ldexp(static_cast<double>(r.integer(-m, m)), scale);
+    double c[18];
+    coords(p, c);
+    ASSERT_TRUE(ex::grid_exact(c, 18)) << bits << " " << scale;
+    ++passed;
+    each_det3(c, [&](const double* a, const double* b, const double* x, const double* d) {
+      if (r.integer(0, 40) != 0) return;
+      const ex::Det3 v = ex::det3_eval(a, d, a, b, a, x);
+      ASSERT_EQ(cmp(Q(v.value), det3_exact(a, d, a, b, a, x)), 0);
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        ASSERT_EQ(cmp(Q(ex::det2_value(a, b, x, i, j)), det2_exact(a, b, x, i, j)), 0);
+      }
+    });
+  }
+  EXPECT_EQ(passed, 3000);
+  // 16 significant bits relative to the largest coordinate: not on the grid
+  TrianglePair p = small_int_pair(r, 3);
+  p.t1[0][0] = 65535;
+  p.t1[0][1] = 1;
+  double c[18];
+  coords(p, c);
+  EXPECT_FALSE(ex::grid_exact(c, 18));
+  // too small a grid step (2^(3q) below 2^-1074)
+  for (auto& v : c) v = std::ldexp(v, -1000);
+  EXPECT_FALSE(ex::grid_exact(c, 18));
+}
+
+// ---------------------------------------------------------------- exact engines
+
+TEST(Engines, IntegerExpansionAndGmpAgree) {
+  GenRng r(8);
+  auto& ic = ex::intexact::counts();
+  ic = {};
+  for (int trial = 0; trial < 40000; ++trial) {
+    TrianglePair p;
+    switch (trial % 6) {
+      case 0: p = perturbed(small_int_pair(r, 4), r); break;
+      case 1: p = wide_pair(r); break;
+      case 2: p = scaled(perturbed(small_int_pair(r, 3), r), static_cast<int>(r.integer(-1070, 1000))); break;
+      case 3: p = near_flat(r, static_cast<int>(r.integer(-600, 600)), static_cast<int>(r.integer(-600, 600))); break;
+      case 4:  // random coordinates with a tiny one: spans of 62..125 bits (the middle path)
+        p = random_pair(r);
+        p.t1[0][0] *= std::ldexp(1.0, -static_cast<int>(r.integer(1, 60)));
+        p.t2[1][1] *= std::ldexp(1.0, -static_cast<int>(r.integer(1, 60)));
+        break;
+      default: p = random_pair(r); break;
+    }
+    double c[18];
+    coords(p, c);
+    const double* q[6];
+    for (int k = 0; k < 6; ++k) q[k] = c + 3 * r.integer(0, 5);
+    const int a = ex::intexact::det3_sign(q), b = ex::exact::det3_sign(q), g = ex::exact::det3_sign_gmp(q);
+    ASSERT_EQ(a, g) << trial;
+    ASSERT_EQ(b, g) << trial;
+    const int i = static_cast<int>(r.integer(0, 2)), j = (i + 1 + static_cast<int>(r.integer(0, 1))) % 3;
+    const int a2 = ex::intexact::det2_sign(q[0], q[1], q[2], i, j), g2 = ex::exact::det2_sign_gmp(q[0], q[1], q[2], i, j);
+    ASSERT_EQ(a2, g2);
+    ASSERT_EQ(ex::exact::det2_sign(q[0], q[1], q[2], i, j), g2);
+  }
+  std::printf("    integer engine: fast3 %llu middle3 %llu wide3 %llu fast2 %llu middle2 %llu wide2 %llu structural %llu\n",
+              (unsigned long long)ic.fast3, (unsigned long long)ic.middle3, (unsigned long long)ic.wide3,
+              (unsigned long long)ic.fast2, (unsigned long long)ic.middle2, (unsigned long long)ic.wide2,
+              (unsigned long long)ic.structural);
+  EXPECT_GT(ic.fast3, 1000u);
+  EXPECT_GT(ic.middle3, 1000u);
+  EXPECT_GT(ic.middle2, 1000u);
+  EXPECT_GT(ic.wide3, 1000u);
+  EXPECT_GT(ic.fast2, 1000u);
+  EXPECT_GT(ic.wide2, 1000u);
+  EXPECT_GT(ic.structural, 100u);
+}
+
+TEST(Engines, ExtremeValues) {
+  const double vals[] = {0.0, -0.0, 5e-324, -5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                         -1.7976931348623157e308, 1.0, 0x1p-1022, 0x1.fffffffffffffp-1, 3.0, -1e300, 1e-300};
+  GenRng r(9);
+  for (int trial = 0; trial < 20000; ++trial) {
+    double c[18];
+    for (auto& v : c) v = vals[r.integer(0, std::size(vals) - 1)];
+    const double* q[6];
+    for (int k = 0; k < 6; ++k) q[k] = c + 3 * r.integer(0, 5);
+    const int g = ex::exact::det3_sign_gmp(q);
+    ASSERT_EQ(ex::intexact::det3_sign(q), g);
+    ASSERT_EQ(ex::exact::det3_sign(q), g);
+    ASSERT_EQ(ex::Filtered::d3(q[0], q[1], q[2], q[3], q[4], q[5]), g);
+    ASSERT_EQ(ex::intexact::det2_sign(q[0], q[1], q[2], 0, 1), ex::exact::det2_sign_gmp(q[0], q[1], q[2], 0, 1));
+    ASSERT_EQ(ex::Filtered::o2(q[0], q[1], q[2], 2, 0), ex::exact::det2_sign_gmp(q[0], q[1], q[2], 2, 0));
+  }
+}
+
+// ---------------------------------------------------------------- classification vs oracle
+
+namespace {
+
+Triangle tri(V a, V b, V c) { return {{a, b, c}}; }
+const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
+
+struct Named {
+  const char* name;
+  TrianglePair pair;
+  Relation relation;   // expected (Relation::degenerate for degenerate input)
+  Dimension dimension;
+};
+
+// One pair per branch of classify.hpp; every vertex order and both argument orders are tried.
+std::vector<Named> branch_cases() {
+  const V z(0, 0, 0);
+  return {
+      {"one-sided", {kFloor, tri({0, 0, 1}, {1, 0, 2}, {0, 1, 3})}, Relation::disjoint, Dimension::none},
+      {"parallel", {kFloor, tri({0, 0, 1}, {1, 0, 1}, {0, 1, 1})}, Relation::parallel, Dimension::none},
+      {"cross", {kFloor, tri({1, 1, -1}, {1, 1, 1}, {2, -3, 0})}, Relation::cross, Dimension::segment},
+      {"interval-disjoint", {kFloor, tri({5, 5, -1}, {5, 5, 1}, {6, 7, 0})}, Relation::disjoint, Dimension::none},
+      {"touch-G=0", {kFloor, tri({4, 0, -1}, {4, 0, 1}, {6, 1, 0})}, Relation::touch_point, Dimension::point},
+      {"touch-I1-point", {kFloor, tri({1, 1, 0}, {1, 1, 3}, {3, 2, 3})}, Relation::touch_point, Dimension::point},
+      {"touch-I2-point", {tri({1, 1, 0}, {1, 1, 3}, {3, 2, 3}), kFloor}, Relation::touch_point, Dimension::point},
+      {"touch-vertex-on-edge", {kFloor, tri({2, 0, 0}, {2, -1, 2}, {3, -1, 2})}, Relation::touch_point, Dimension::point},
+      {"touch-segment-hinge", {kFloor, tri({0, 0, 0}, {4, 0, 0}, {1, -1, 2})}, Relation::touch_segment, Dimension::segment},
+      {"touch-segment-edge-in-face", {kFloor, tri({1, 1, 0}, {2, 1, 0}, {1, 1, 3})}, Relation::touch_segment, Dimension::segment},
+      {"cross-vertex-on-face", {kFloor, tri({1, 1, 0}, {2, 1, 2}, {1, 2, -2})}, Relation::cross, Dimension::segment},
+      {"coplanar-disjoint", {kFloor, tri({5, 5, 0}, {9, 5, 0}, {5, 9, 0})}, Relation::coplanar_disjoint, Dimension::none},
+      {"coplanar-overlap", {kFloor, tri({1, 1, 0}, {5, 1, 0}, {1, 5, 0})}, Relation::coplanar_overlap, Dimension::area},
+      {"coplanar-point", {kFloor, tri({4, 0, 0}, {6, 0, 0}, {5, -2, 0})}, Relation::coplanar_point, Dimension::point},
+      {"coplanar-segment", {kFloor, tri({0, 0, 0}, {4, 0, 0}, {2, -3, 0})}, Relation::coplanar_segment, Dimension::segment},
+      {"coplanar-collinear-touch", {kFloor, tri({4, 0, 0}, {8, 0, 0}, {6, -3, 0})}, Relation::coplanar_point, Dimension::point},
+      {"coplanar-contained", {kFloor, tri({1, 1, 0}, {2, 1, 0}, {1, 2, 0})}, Relation::coplanar_overlap, Dimension::area},
+      {"coplanar-vertex-on-edge", {kFloor, tri({2, 0, 0}, {3, -2, 0}, {1, -2, 0})}, Relation::coplanar_point, Dimension::point},
+      // degenerate: point, segment, triangle hulls
+      {"point-point-same", {tri(z, z, z), tri(z, z, z)}, Relation::degenerate, Dimension::point},
+      {"point-point-apart", {tri(z, z, z), tri({1, 0, 0}, {1, 0, 0}, {1, 0, 0})}, Relation::degenerate, Dimension::none},
+      {"point-on-segment", {tri({1, 1, 1}, {1, 1, 1}, {1, 1, 1}), tri(z, {2, 2, 2}, {3, 3, 3})}, Relation::degenerate, Dimension::point},
+      {"point-off-segment", {tri({1, 1, 2}, {1, 1, 2}, {1, 1, 2}), tri(z, {2, 2, 2}, {3, 3, 3})}, Relation::degenerate, Dimension::none},
+      {"point-beyond-segment", {tri({4, 4, 4}, {4, 4, 4}, {4, 4, 4}), tri(z, {2, 2, 2}, {3, 3, 3})}, Relation::degenerate, Dimension::none},
+      {"point-in-triangle", {tri({1, 1, 0}, {1, 1, 0}, {1, 1, 0}), kFloor}, Relation::degenerate, Dimension::point},
+      {"point-on-triangle-edge", {tri({2, 0, 0}, {2, 0, 0}, {2, 0, 0}), kFloor}, Relation::degenerate, Dimension::point},
+      {"point-outside-triangle", {tri({3, 3, 0}, {3, 3, 0}, {3, 3, 0}), kFloor}, Relation::degenerate, Dimension::none},
+      {"point-above-triangle", {tri({1, 1, 1}, {1, 1, 1}, {1, 1, 1}), kFloor}, Relation::degenerate, Dimension::none},
+      {"segments-cross", {tri({0, 0, 0}, {2, 2, 0}, {1, 1, 0}), tri({0, 2, 0}, {2, 0, 0}, {2, 0, 0})}, Relation::degenerate, Dimension::point},
+      {"segments-skew", {tri({0, 0, 0}, {2, 2, 0}, {1, 1, 0}), tri({0, 2, 1}, {2, 0, 1}, {2, 0, 1})}, Relation::degenerate, Dimension::none},
+      {"segments-collinear-overlap", {tri({0, 0, 0}, {2, 0, 0}, {1, 0, 0}), tri({1, 0, 0}, {3, 0, 0}, {3, 0, 0})}, Relation::degenerate, Dimension::segment},
+      {"segments-collinear-touch", {tri({0, 0, 0}, {2, 0, 0}, {1, 0, 0}), tri({2, 0, 0}, {3, 0, 0}, {3, 0, 0})}, Relation::degenerate, Dimension::point},
+      {"segments-collinear-apart", {tri({0, 0, 0}, {2, 0, 0}, {1, 0, 0}), tri({3, 0, 0}, {4, 0, 0}, {4, 0, 0})}, Relation::degenerate, Dimension::none},
+      {"segments-coplanar-T", {tri({0, 0, 0}, {2, 0, 0}, {2, 0, 0}), tri({1, 0, 0}, {1, 2, 0}, {1, 2, 0})}, Relation::degenerate, Dimension::point},
+      {"segments-coplanar-apart", {tri({0, 0, 0}, {2, 0, 0}, {2, 0, 0}), tri({1, 1, 0}, {1, 2, 0}, {1, 2, 0})}, Relation::degenerate, Dimension::none},
+      {"segment-pierces-triangle", {tri({1, 1, -1}, {1, 1, 1}, {1, 1, 0}), kFloor}, Relation::degenerate, Dimension::point},
+      {"segment-misses-triangle", {tri({3, 3, -1}, {3, 3, 1}, {3, 3, 0}), kFloor}, Relation::degenerate, Dimension::none},
+      {"segment-ends-on-triangle", {tri({1, 1, 0}, {1, 1, 1}, {1, 1, 2}), kFloor}, Relation::degenerate, Dimension::point},
+      {"segment-above-triangle", {tri({1, 1, 1}, {1, 1, 2}, {1, 1, 3}), kFloor}, Relation::degenerate, Dimension::none},
+      {"segment-in-triangle-plane-through", {tri({-1, 1, 0}, {5, 1, 0}, {2, 1, 0}), kFloor}, Relation::degenerate, Dimension::segment},
+      {"segment-along-edge", {tri({1, 0, 0}, {6, 0, 0}, {2, 0, 0}), kFloor}, Relation::degenerate, Dimension::segment},
+      {"segment-touches-vertex-coplanar", {tri({4, 0, 0}, {6, 0, 0}, {5, 0, 0}), kFloor}, Relation::degenerate, Dimension::point},
+      {"segment-touches-edge-coplanar", {tri({2, 2, 0}, {4, 4, 0}, {3, 3, 0}), kFloor}, Relation::degenerate, Dimension::point},
+      {"segment-coplanar-outside", {tri({3, 3, 0}, {4, 4, 0}, {5, 5, 0}), kFloor}, Relation::degenerate, Dimension::none},
+      {"segment-coplanar-inside", {tri({1, 1, 0}, {2, 1, 0}, {1.5, 1, 0}), kFloor}, Relation::degenerate, Dimension::segment},
+  };
+}
+
+Triangle permuted(const Triangle& t, const std::array<int, 3>& o) { return {{t[o[0]], t[o[1]], t[o[2]]}}; }
+constexpr std::array<std::array<int, 3>, 6> kOrders{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+
+std::vector<TrianglePair> all_orders(const TrianglePair& p) {
+  std::vector<TrianglePair> out;
+  for (bool swap : {false, true})
+    for (const auto& o1 : kOrders)
+      for (const auto& o2 : kOrders) {
+        TrianglePair q{permuted(p.t1, o1), permuted(p.t2, o2)};
+        out.push_back(swap ? swapped(q) : q);
+      }
+  return out;
+}
+
+bool same(const RelationAnswer& a, const OracleRecord& o) { return a.relation == o.relation && a.dimension == o.dimension; }
+
+// Every ISA and the scalar path, overlap and relation, against the oracle.
+void expect_all_paths_agree(const std::vector<TrianglePair>& pairs, const std::string& what) {
+  std::vector<OracleRecord> truth;
+  for (const auto& p : pairs) truth.push_back(oracle_label(p));
+  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+    if (!ex::supported(isa)) continue;
+    std::vector<Overlap> ov(pairs.size());
+    std::vector<RelationAnswer> rel(pairs.size());
+    ex::overlap_batch_with(isa, pairs.data(), pairs.size(), ov.data());
+    ex::relation_batch_with(isa, pairs.data(), pairs.size(), rel.data());
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      ASSERT_EQ(ov[i] == Overlap::yes, truth[i].overlap) << what << " #" << i << " " << ex::to_string(isa);
+      ASSERT_NE(ov[i], Overlap::unsupported);
+      ASSERT_TRUE(same(rel[i], truth[i])) << what << " #" << i << " " << ex::to_string(isa) << ": "
+                                          << to_string(rel[i].relation) << "/" << to_string(rel[i].dimension)
+                                          << " vs " << to_string(truth[i].relation) << "/" << to_string(truth[i].dimension);
+    }
+  }
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    ASSERT_TRUE(same(ex::relation(pairs[i]), truth[i])) << what << " scalar #" << i;
+    ASSERT_EQ(ex::overlap(pairs[i]) == Overlap::yes, truth[i].overlap) << what << " scalar #" << i;
+  }
+}
+
+}  // namespace
+
+TEST(Classify, EveryBranchInEveryOrderMatchesTheOracleAndTheExpectation) {
+  for (const Named& c : branch_cases()) {
+    const OracleRecord o = oracle_label(c.pair);
+    ASSERT_EQ(o.relation, c.relation) << c.name << ": the expectation is wrong";
+    ASSERT_EQ(o.dimension, c.dimension) << c.name << ": the expectation is wrong";
+    const auto variants = all_orders(c.pair);
+    expect_all_paths_agree(variants, c.name);
+    // the same case scaled and translated: on the grid, off the grid (exact path), tiny, huge
+    std::vector<TrianglePair> moved;
+    for (const auto& v : variants) {
+      moved.push_back(scaled(v, -700));
+      moved.push_back(scaled(v, 600));
+      moved.push_back(translated(scaled(v, -40), V(0.1, 0.3, 0.7)));  // off any small grid
+      moved.push_back(scaled(translated(v, V(1e6, -3e7, 5e5)), -3));
+      TrianglePair aniso = v;  // x tiny, y and z huge (exact scalings: the relation is unchanged)
+      for (Triangle* t : {&aniso.t1, &aniso.t2})
+        for (auto& w : t->v) w = V(std::ldexp(w[0], -1060), std::ldexp(w[1], 300), std::ldexp(w[2], 280));
+      moved.push_back(aniso);
+    }
+    expect_all_paths_agree(moved, std::string(c.name) + " moved");
+  }
+}
+
+TEST(Classify, BuiltinCasesInAll72Orders) {
+  const auto cases = read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases");
+  ASSERT_GE(cases.size(), 40u);
+  for (const Case& c : cases) {
+    const auto expected = parse_relation(*c.label("expect"));
+    ASSERT_TRUE(expected);
+    const auto variants = all_orders(c.pair);
+    for (const auto& v : variants) ASSERT_EQ(ex::relation(v).relation, *expected) << c.name;
+    expect_all_paths_agree(variants, c.name);
+  }
+}
+
+TEST(Classify, NonFiniteInputIsDeclined) {
+  TrianglePair p{kFloor, kFloor};
+  p.t2[1][2] = std::nan("");
+  EXPECT_EQ(ex::overlap(p), Overlap::unsupported);
+  EXPECT_EQ(ex::relation(p).relation, Relation::unsupported);
+  std::vector<TrianglePair> many(37, TrianglePair{kFloor, tri({1, 1, -1}, {1, 1, 1}, {2, -3, 0})});
+  many[5].t1[0][0] = INFINITY;
+  many[33].t2[2][1] = -INFINITY;
+  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+    if (!ex::supported(isa)) continue;
+    std::vector<Overlap> out(many.size());
+    std::vector<RelationAnswer> rel(many.size());
+    ex::overlap_batch_with(isa, many.data(), many.size(), out.data());
+    ex::relation_batch_with(isa, many.data(), many.size(), rel.data());
+    for (std::size_t i = 0; i < many.size(); ++i) {
+      const bool bad = i == 5 || i == 33;
+      EXPECT_EQ(out[i], bad ? Overlap::unsupported : Overlap::yes) << i;
+      EXPECT_EQ(rel[i].relation, bad ? Relation::unsupported : Relation::cross) << i;
+    }
+  }
+}
+
+// ---------------------------------------------------------------- the paths of the batch
+
+namespace {
+ex::Stats run_overlap(ex::Isa isa, const std::vector<TrianglePair>& pairs) {
+  std::vector<Overlap> out(pairs.size());
+  ex::reset_stats();
+  ex::intexact::counts() = {};
+  ex::overlap_batch_with(isa, pairs.data(), pairs.size(), out.data());
+  return ex::stats();
+}
+}  // namespace
+
+TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
+  GenRng r(10);
+  for (ex::Isa isa : {ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+    if (!ex::supported(isa)) continue;
+    SCOPED_TRACE(ex::to_string(isa));
+    // 1. general position: every lane decided by the first SIMD pass (filter certain)
+    std::vector<TrianglePair> general;
+    for (int i = 0; i < 4096; ++i) general.push_back(random_pair(r));
+    ex::Stats s = run_overlap(isa, general);
+    EXPECT_EQ(s.pending, 0u);
+    // 2. exactly coplanar on the grid: decided by the second SIMD pass
+    std::vector<TrianglePair> coplanar;
+    for (int i = 0; i < 4096; ++i) {
+      TrianglePair p;
+      for (auto& v : p.t1.v) v = V(static_cast<double>(r.integer(-6, 6)), static_cast<double>(r.integer(-6, 6)), 3);
+      for (auto& v : p.t2.v) v = V(r.integer(-6, 6) + 0.5, r.integer(-6, 6) + 0.25, 3);
+      coplanar.push_back(p);
+    }
+    s = run_overlap(isa, coplanar);
+    EXPECT_EQ(s.pending, 4096u);
+    EXPECT_LT(s.scalar, 4096u / 5) << "the degenerate and touching ones only";
+    // 3. touching on the grid (shared vertex): the scalar classification with plain double
+    std::vector<TrianglePair> touching;
+    for (int i = 0; i < 2048; ++i) {
+      TrianglePair p = small_int_pair(r, 6);
+      p.t2[0] = p.t1[0];
+      touching.push_back(p);
+    }
+    s = run_overlap(isa, touching);
+    EXPECT_GT(s.grid, 1500u);
+    // 4. filter uncertain off the grid -> exact engines (fast path and wide path)
+    std::vector<TrianglePair> near;
+    for (int i = 0; i < 2048; ++i) near.push_back(near_flat(r, 0, static_cast<int>(r.integer(0, 4))));
+    s = run_overlap(isa, near);
+    EXPECT_GT(s.filtered, 100u);
+    EXPECT_GT(ex::intexact::counts().fast3, 0u);
+    std::vector<TrianglePair> wide;
+    for (int i = 0; i < 2048; ++i) wide.push_back(wide_pair(r));
+    s = run_overlap(isa, wide);
+    EXPECT_GT(ex::intexact::counts().wide3 + ex::intexact::counts().wide2, 0u);
+    expect_all_paths_agree(coplanar, "coplanar");
+    expect_all_paths_agree(touching, "touching");
+    expect_all_paths_agree(std::vector<TrianglePair>(near.begin(), near.begin() + 512), "near");
+    expect_all_paths_agree(std::vector<TrianglePair>(wide.begin(), wide.begin() + 512), "wide");
+  }
+}
+
+// Batches of every length 0..40 (tails shorter than the lane count) and of more than one chunk.
+TEST(Paths, EveryBatchLengthAndChunking) {
+  GenRng r(11);
+  std::vector<TrianglePair> pairs;
+  for (int i = 0; i < 9000; ++i) pairs.push_back(i % 3 ? random_pair(r) : small_int_pair(r, 2));
+  std::vector<RelationAnswer> ref(pairs.size());
+  for (std::size_t i = 0; i < pairs.size(); ++i) ref[i] = ex::relation(pairs[i]);
+  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+    if (!ex::supported(isa)) continue;
+    for (std::size_t n : {0, 1, 2, 3, 5, 7, 8, 9, 15, 16, 17, 31, 40, 4095, 4096, 4097, 9000}) {
+      std::vector<RelationAnswer> rel(n + 1, RelationAnswer{Relation::unknown, Dimension::unknown});
+      std::vector<Overlap> ov(n + 1, Overlap::unsupported);
+      ex::relation_batch_with(isa, pairs.data(), n, rel.data());
+      ex::overlap_batch_with(isa, pairs.data(), n, ov.data());
+      for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_EQ(rel[i].relation, ref[i].relation) << n << " " << i;
+        ASSERT_EQ(rel[i].dimension, ref[i].dimension);
+        ASSERT_EQ(ov[i] == Overlap::yes, ex::detail::meets(ref[i]));
+      }
+      ASSERT_EQ(rel[n].relation, Relation::unknown) << "wrote past the end";
+      ASSERT_EQ(ov[n], Overlap::unsupported) << "wrote past the end";
+    }
+  }
+}
