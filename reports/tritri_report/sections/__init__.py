@@ -29,8 +29,8 @@ SECTIONS = [
     tropp06,
     sabharwal15,
     yuhe13,
-    scenes,
     unquoted,
+    scenes,
     gallery,
     provenance,
 ]
