@@ -15,18 +15,29 @@ namespace {
 Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
 const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 
+using detail::heights;
+using detail::plane_through;
+
+detail::Plane<double> floor_plane() {
+  return plane_through(kFloor[0].data(), kFloor[1].data(), kFloor[2].data());
+}
+
 TEST(Moller97Pieces, PlaneDistancesAreUnnormalised) {
-  const auto p = plane_of(kFloor);
-  EXPECT_EQ(p.normal, Vec3<double>(0, 0, 16));  // (4,0,0) x (0,4,0)
-  const auto d = distances<double, false>(p, tri({0, 0, 1}, {0, 0, -2}, {5, 5, 0}));
+  const auto p = floor_plane();
+  EXPECT_EQ(p.n[0], 0.0);
+  EXPECT_EQ(p.n[1], 0.0);
+  EXPECT_EQ(p.n[2], 16.0);  // (4,0,0) x (0,4,0)
+  const Triangle t = tri({0, 0, 1}, {0, 0, -2}, {5, 5, 0});
+  const auto d = heights<double, false>(p, t[0].data(), t[1].data(), t[2].data());
   EXPECT_EQ(d.d[0], 16.0);
   EXPECT_EQ(d.d[1], -32.0);
   EXPECT_EQ(d.d[2], 0.0);
 }
 
 TEST(Moller97Pieces, SnapZeroesOnlyBelowEpsilon) {
-  const auto p = plane_of(kFloor);  // |N| = 16: a height h gives d = 16 h
-  const auto d = distances<double, true>(p, tri({0, 0, 5e-8}, {0, 0, 1e-7}, {0, 0, 1e-6}));
+  const auto p = floor_plane();  // |N| = 16: a height h gives d = 16 h
+  const Triangle t = tri({0, 0, 5e-8}, {0, 0, 1e-7}, {0, 0, 1e-6});
+  const auto d = heights<double, true>(p, t[0].data(), t[1].data(), t[2].data());
   EXPECT_EQ(d.d[0], 0.0);   // 8e-7 < 1e-6
   EXPECT_EQ(d.d[1], 16e-7); // not below EPSILON
   EXPECT_EQ(d.d[2], 16e-6);
@@ -34,8 +45,13 @@ TEST(Moller97Pieces, SnapZeroesOnlyBelowEpsilon) {
 
 TEST(Moller97Pieces, LoneVertexFollowsThePublishedCaseOrder) {
   auto with = [](double a, double b, double c) {
-    Distances<double> s{{a, b, c}, a * b, a * c};
-    return lone_vertex(s);
+    const detail::Heights<double> h{{a, b, c}, a * b, a * c};
+    int lone = -1;
+    detail::with_lone_vertex(h, [&]<int K, int A, int B>(detail::Lone<K, A, B>) {
+      lone = K;
+      return true;
+    });
+    return lone;
   };
   EXPECT_EQ(with(1, 2, -1), 2);
   EXPECT_EQ(with(1, -2, 3), 1);
@@ -46,20 +62,16 @@ TEST(Moller97Pieces, LoneVertexFollowsThePublishedCaseOrder) {
   EXPECT_EQ(with(0, 0, 0), -1);  // coplanar
 }
 
-TEST(Moller97Pieces, CoplanarProjectionDropsTheDominantAxis) {
-  EXPECT_EQ(coplanar_projection<double>({0, 0, 5}).i0, 0);
-  EXPECT_EQ(coplanar_projection<double>({0, 0, 5}).i1, 1);
-  EXPECT_EQ(coplanar_projection<double>({5, 1, 1}).i0, 1);
-  EXPECT_EQ(coplanar_projection<double>({1, 5, 1}).i1, 2);
-}
-
 TEST(Moller97Pieces, TheEdgeTestMissesCollinearOverlap) {
-  const auto p = coplanar_projection<double>({0, 0, 1});
+  const Vec3<double> o(0, 0, 0);
+  auto meet = [&](Vec3<double> u0, Vec3<double> u1) {
+    return detail::edges_cross(0, 1, 4.0, 0.0, o.data(), u0.data(), u1.data());
+  };
   // crossing edges are found, endpoints included
-  EXPECT_TRUE(edges_meet<double>(p, {0, 0, 0}, 4, 0, {2, -1, 0}, {2, 1, 0}));
-  EXPECT_TRUE(edges_meet<double>(p, {0, 0, 0}, 4, 0, {4, 0, 0}, {5, 1, 0}));
+  EXPECT_TRUE(meet({2, -1, 0}, {2, 1, 0}));
+  EXPECT_TRUE(meet({4, 0, 0}, {5, 1, 0}));
   // collinear overlapping edges have a zero denominator and are never reported: as published
-  EXPECT_FALSE(edges_meet<double>(p, {0, 0, 0}, 4, 0, {2, 0, 0}, {6, 0, 0}));
+  EXPECT_FALSE(meet({2, 0, 0}, {6, 0, 0}));
 }
 
 // Random pairs in general position: all four variants answer as the oracle does. With random
@@ -107,11 +119,12 @@ TEST(Moller97, SnapOnOneSideOnlyTakesTheCoplanarBranch) {
   const Triangle t1 = tri({0, 0, 0}, {100, 0, 0}, {0, 100, 0});
   const Triangle t2 = tri({0, 0, 0}, {1000, 0, 0}, {0, 1000, 5e-11});
   const TrianglePair pair{t1, t2};
-  tritri::moller97::Setup<double, true> s;
-  ASSERT_TRUE((setup<double, true>(pair, s)));
-  EXPECT_GE(s.lone1, 0);
-  EXPECT_LT(s.lone2, 0);
-  EXPECT_TRUE(s.coplanar());
+  const auto p1 = plane_through(t1[0].data(), t1[1].data(), t1[2].data());
+  const auto p2 = plane_through(t2[0].data(), t2[1].data(), t2[2].data());
+  const auto du = heights<double, true>(p1, t2[0].data(), t2[1].data(), t2[2].data());
+  const auto dv = heights<double, true>(p2, t1[0].data(), t1[1].data(), t1[2].data());
+  EXPECT_TRUE(du.d[0] == 0.0 && du.d[1] == 0.0 && du.d[2] == 0.0);  // T2 snapped into T1's plane
+  EXPECT_NE(dv.d[2], 0.0);                                         // T1 not into T2's
   // coplanar branch: the projections overlap, so the snapped test says they meet
   EXPECT_TRUE((overlap<double, true>(pair)));
   EXPECT_TRUE((overlap_division_free<double, true>(pair)));

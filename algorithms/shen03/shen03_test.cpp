@@ -19,33 +19,32 @@ const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 
 std::vector<Case> builtin_cases() { return read_case_file(std::string(TRITRI_SOURCE_DIR) + "/cases/builtin.cases"); }
 
-TEST(Shen03Pieces, VertexPlaneDistancesAreLengths) {
-  double d[3];
-  int s[3];
-  signed_distances(kFloor, tri({0, 0, 3}, {1, 1, -2}, {2, 2, 5e-8}), d, s);
-  EXPECT_EQ(d[0], 3.0);
-  EXPECT_EQ(d[1], -2.0);
-  EXPECT_EQ(s[0], 1);
-  EXPECT_EQ(s[1], -1);
-  EXPECT_EQ(s[2], 0);  // 5e-8 is within the tolerance
+// The published distances are unnormalised: N·X + d with |N| = twice the area, so a height h
+// above kFloor (|N| = 16) gives 16 h; the snap to 0 is on that value, not on h.
+TEST(Shen03Pieces, PlaneDistancesAreUnnormalisedAndSnappedBelowTheTolerance) {
+  const Vec3<double> a(0, 0, 0), b(4, 0, 0), c(0, 4, 0);
+  const auto plane = detail::plane_through(a.data(), b.data(), c.data());
+  const Vec3<double> up(0, 0, 3), down(1, 1, -2), close(2, 2, 5e-9), not_close(2, 2, 1e-8);
+  EXPECT_EQ(detail::height(plane, up.data()), 48.0);
+  EXPECT_EQ(detail::height(plane, down.data()), -32.0);
+  EXPECT_EQ(detail::height(plane, close.data()), 0.0);       // 8e-8 < 1e-7
+  EXPECT_EQ(detail::height(plane, not_close.data()), 16e-8);  // not below the tolerance
 }
 
-TEST(Shen03Pieces, LineDistanceIsSignedAndALength) {
-  // the x axis, and the line through (0,0,2) along y: 2 apart
-  const Vec3<double> a(0, 0, 0), b(1, 0, 0);
-  EXPECT_DOUBLE_EQ(line_distance<double>(a, b, {0, 0, 2}, {0, 5, 2}), -2.0);
-  EXPECT_DOUBLE_EQ(line_distance<double>(a, b, {0, 5, 2}, {0, 0, 2}), 2.0);
-  EXPECT_EQ(line_distance<double>(a, b, {3, -1, 0}, {3, 1, 0}), 0.0);  // they meet
-  // the sign is Guigue–Devillers' orientation [a,b,c,d]
-  EXPECT_EQ(guigue03::FloatPredicates<double>::orient3d(a, b, {0, 0, 2}, {0, 5, 2}), -1);
-  EXPECT_EQ(guigue03::FloatPredicates<double>::orient3d(a, b, {0, 5, 2}, {0, 0, 2}), 1);
+TEST(Shen03Pieces, LineLineValueIsATripleProduct) {
+  // the x axis, and the line through (0,0,2) along y (5 long): ((1,0,0)×(0,5,0))·(0,0,2) = 10
+  const Vec3<double> a0(0, 0, 0), a1(1, 0, 0), b0(0, 0, 2), b1(0, 5, 2);
+  const double w[3] = {0, 0, 2};
+  EXPECT_EQ(detail::line_line(a1.data(), a0.data(), b1.data(), b0.data(), w), 10.0);
+  EXPECT_EQ(detail::line_line(a1.data(), a0.data(), b0.data(), b1.data(), w), -10.0);
 }
 
-TEST(Shen03Pieces, ToleranceIsAbsoluteAndBelowItCountsAsZero) {
-  EXPECT_EQ(tolerant_sign(1e-7), 0);
-  EXPECT_EQ(tolerant_sign(-1e-7), 0);
-  EXPECT_EQ(tolerant_sign(1.5e-7), 1);
-  EXPECT_EQ(tolerant_sign(-1.5e-7), -1);
+TEST(Shen03Pieces, AloneIsThePublishedSignTest) {
+  EXPECT_TRUE(detail::alone(1.0, 2.0, -1.0));
+  EXPECT_TRUE(detail::alone(0.0, 2.0, -1.0));   // a zero sides with the pair
+  EXPECT_TRUE(detail::alone(1.0, 2.0, 0.0));    // a zero can be the lone one
+  EXPECT_FALSE(detail::alone(0.0, 0.0, 0.0));
+  EXPECT_FALSE(detail::alone(1.0, -2.0, 3.0));
 }
 
 TEST(Shen03, GeneralBuiltinCasesAgreeWithTheOracle) {
@@ -91,14 +90,16 @@ TEST(Shen03, SmallIntegerPairsIncludingSingularOnesAgreeWithTheOracle) {
   }
 }
 
+// The published tolerance is on N·X + d, unnormalised: kFloor's |N| is 16, so a height below
+// 1e-7 / 16 = 6.25e-9 counts as 0 (and would be 4 times larger for a floor half the size).
 TEST(Shen03, NearMissesWithinTheToleranceCountAsTouching) {
   auto hovering = [](double h) { return TrianglePair{kFloor, tri({1, 1, h}, {1, 1, 3}, {3, 2, 3})}; };
-  EXPECT_TRUE(overlap(hovering(5e-8)));   // apart by 5e-8: reported overlapping (by design)
-  EXPECT_FALSE(overlap(hovering(5e-7)));  // apart by 5e-7: rejected
+  EXPECT_TRUE(overlap(hovering(5e-9)));   // apart by 5e-9: 16 h = 8e-8, reported touching
+  EXPECT_FALSE(overlap(hovering(5e-8)));  // apart by 5e-8: 16 h = 8e-7, rejected
   EXPECT_TRUE(overlap(hovering(0)));
   // a near-coplanar pair within the tolerance takes the coplanar branch
-  EXPECT_TRUE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-8}, {5, 1, 5e-8}, {1, 5, 5e-8})}));
-  EXPECT_FALSE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-6}, {5, 1, 5e-6}, {1, 5, 5e-6})}));
+  EXPECT_TRUE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-9}, {5, 1, 5e-9}, {1, 5, 5e-9})}));
+  EXPECT_FALSE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-8}, {5, 1, 5e-8}, {1, 5, 5e-8})}));
 }
 
 // ---- the counting instantiation (tritri bench's operation counts) ----

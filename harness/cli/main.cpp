@@ -19,6 +19,7 @@ constexpr Command kCommands[] = {
     {"corpus", "generate and label the singular-configuration corpus (case files per family)", run_corpus},
     {"bench", "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)", run_bench},
     {"compare", "what changed between two check or bench results (with a U test for times)", run_compare},
+    {"diff", "where two algorithms answer differently (e.g. a port and its authors' code)", run_diff},
 };
 
 void print_usage(std::ostream& out) {

@@ -10,7 +10,7 @@ A section is a module with
 The report writes each heading, then calls render.
 """
 
-from . import (asymmetry, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
+from . import (asymmetry, authors, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
                sabharwal15, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
 
 SECTIONS = [
@@ -29,6 +29,7 @@ SECTIONS = [
     sabharwal15,
     yuhe13,
     unquoted,
+    authors,
     gallery,
     provenance,
 ]
