@@ -38,8 +38,8 @@ def render(run, part):
 
 
 def differences(part, diff):
-    part.add("Answers, port against original, on %s cases (%s):\n"
-             % (count(diff.get("case_count", 0)), ", ".join(diff.get("inputs", [])) or "-"))
+    part.add("Answers, port against original, on %s cases (%d case files), from `%s`:\n"
+             % (count(diff.get("case_count", 0)), len(diff.get("inputs", [])), DIFF))
     rows = []
     for p in diff.get("pairs", []):
         where = ", ".join("%s %s" % (f["family"], count(f["differ"]))
