@@ -2,6 +2,7 @@
 // oracle's. Sign-only code on small integers is exact in double, so there both entries must agree
 // with the oracle on every pair, singular or not: the conformance suite's promise "exact".
 #include "algorithms/guigue03/guigue03.hpp"
+#include "cases/util/random.hpp"
 
 #include "cases/casefile.hpp"
 #include "cases/oracle/oracle.hpp"
@@ -24,63 +25,81 @@ TEST(Guigue03Pieces, OrientationSignConvention) {
   EXPECT_EQ(FloatPredicates<double>::orient2d({0, 0}, {1, 0}, {0, 1}), 1);
 }
 
-TEST(Guigue03Pieces, LoneVertexIsAloneAndItsEdgesReachThePlane) {
-  // For every sign pattern but the one-sided and the all-zero ones: after the chosen flip, the
-  // first vertex is ≥ 0, the other two ≤ 0, and the first is non-zero or both others are.
-  for (int a = -1; a <= 1; ++a)
-    for (int b = -1; b <= 1; ++b)
-      for (int c = -1; c <= 1; ++c) {
-        const int s[3] = {a, b, c};
-        if (one_sided(s)) continue;
-        const Lone l = lone_vertex(s);
-        if (all_zero(s)) {
-          EXPECT_EQ(l.index, -1);
-          continue;
-        }
-        ASSERT_GE(l.index, 0);
-        const int f = l.flip ? -1 : 1;
-        const int first = f * s[l.index], second = f * s[(l.index + 1) % 3], third = f * s[(l.index + 2) % 3];
-        SCOPED_TRACE(::testing::Message() << a << " " << b << " " << c);
-        EXPECT_GE(first, 0);
-        EXPECT_LE(second, 0);
-        EXPECT_LE(third, 0);
-        EXPECT_TRUE(first != 0 || (second != 0 && third != 0));
-      }
-}
+// Step 3's two sign tables put each triangle's lone vertex first, on the positive side of the
+// other's plane, the other two on the non-positive side: the order step 4's two determinants
+// rely on. Checked on small-integer pairs, where every orientation is exact and zero signs occur.
+struct RecordLast {
+  const double* v[6] = {};
+  bool general_reached = false;
+  bool rejected() { return false; }
+  bool general(const double* p1, const double* q1, const double* r1, const double* p2,
+               const double* q2, const double* r2) {
+    general_reached = true;
+    const double* w[6] = {p1, q1, r1, p2, q2, r2};
+    for (int i = 0; i < 6; ++i) v[i] = w[i];
+    return true;
+  }
+  bool coplanar(const double*, const double*, const double*, const double*, const double*,
+                const double*) {
+    return true;
+  }
+};
 
-TEST(Guigue03Pieces, CanonicalOrderPutsEachLoneVertexOnThePositiveSide) {
-  const TrianglePair pair{tri({1, 1, -2}, {1, 1, 2}, {1, -3, 1}), kFloor};  // T1 pierces T2
-  int s1[3], s2[3];
-  const auto c = canonical<double>(pair, s1, s2);
-  ASSERT_EQ(c.outcome, Canonical<double>::Outcome::general);
-  const auto& [p1, q1, r1] = c.t1.v;
-  const auto& [p2, q2, r2] = c.t2.v;
-  EXPECT_GT(FloatPredicates<double>::orient3d(p2, q2, r2, p1), 0);
-  EXPECT_LE(FloatPredicates<double>::orient3d(p2, q2, r2, q1), 0);
-  EXPECT_LE(FloatPredicates<double>::orient3d(p2, q2, r2, r1), 0);
-  EXPECT_GE(FloatPredicates<double>::orient3d(p1, q1, r1, p2), 0);
-  EXPECT_LE(FloatPredicates<double>::orient3d(p1, q1, r1, q2), 0);
-  EXPECT_LE(FloatPredicates<double>::orient3d(p1, q1, r1, r2), 0);
+TEST(Guigue03Pieces, SignTablesPutEachLoneVertexOnThePositiveSide) {
+  using P = FloatPredicates<double>;
+  Rng rng(3);
+  auto coord = [](Rng& r) { return static_cast<double>(r.between(-2, 2)); };
+  int general = 0;
+  for (int n = 0; n < 3000; ++n) {
+    TrianglePair pair;
+    for (auto* t : {&pair.t1, &pair.t2})
+      for (int i = 0; i < 3; ++i) {
+        const double x = coord(rng);
+        const double y = coord(rng);
+        const double z = coord(rng);
+        (*t)[i] = Vec3<double>(x, y, z);
+      }
+    if (has_degenerate_triangle(pair)) continue;
+    double n1[3], n2[3];
+    RecordLast last;
+    detail::canonical<double, P>(pair, n1, n2, last);
+    if (!last.general_reached) continue;
+    ++general;
+    const auto& v = last.v;
+    SCOPED_TRACE(format_case({"r", pair, {}, "", 0}, NumberStyle::g17));
+    const double first1 = P::orient3d_value(v[3], v[4], v[5], v[0]);
+    EXPECT_GE(first1, 0);
+    EXPECT_LE(P::orient3d_value(v[3], v[4], v[5], v[1]), 0);
+    EXPECT_LE(P::orient3d_value(v[3], v[4], v[5], v[2]), 0);
+    EXPECT_GE(P::orient3d_value(v[0], v[1], v[2], v[3]), 0);
+    EXPECT_LE(P::orient3d_value(v[0], v[1], v[2], v[4]), 0);
+    EXPECT_LE(P::orient3d_value(v[0], v[1], v[2], v[5]), 0);
+  }
+  EXPECT_GT(general, 300);
 }
 
 TEST(Guigue03Pieces, RegionTestInEachRegionKind) {
-  using P = Point2<double>;
-  const P a{0, 0}, b{4, 0}, c{0, 4};
+  using P = FloatPredicates<double>;
+  const double a[2] = {0, 0}, b[2] = {4, 0}, c[2] = {0, 4};
+  auto ccw = [&](std::array<double, 2> p, std::array<double, 2> q, std::array<double, 2> r) {
+    return detail::ccw_overlap_2d<double, P>(p.data(), q.data(), r.data(), a, b, c);
+  };
   // p1 inside T2
-  EXPECT_TRUE(ccw_overlap_2d<double>(P{1, 1}, P{9, 9}, P{8, 9}, a, b, c));
+  EXPECT_TRUE(ccw({1, 1}, {9, 9}, {8, 9}));
   // p1 in the edge region beyond (b,c): T1 reaches back across the hypotenuse, or not
-  EXPECT_TRUE(ccw_overlap_2d<double>(P{4, 4}, P{6, 6}, P{1, 2}, a, b, c));
-  EXPECT_FALSE(ccw_overlap_2d<double>(P{4, 4}, P{5, 4}, P{4, 5}, a, b, c));
+  EXPECT_TRUE(ccw({4, 4}, {6, 6}, {1, 2}));
+  EXPECT_FALSE(ccw({4, 4}, {5, 4}, {4, 5}));
   // p1 in the vertex region of a: T1 touches a exactly, or misses
-  EXPECT_TRUE(ccw_overlap_2d<double>(P{-2, -2}, P{0, -2}, P{0, 0}, a, b, c));
-  EXPECT_FALSE(ccw_overlap_2d<double>(P{-2, -2}, P{0, -3}, P{-1, -1}, a, b, c));
+  EXPECT_TRUE(ccw({-2, -2}, {0, -2}, {0, 0}));
+  EXPECT_FALSE(ccw({-2, -2}, {0, -3}, {-1, -1}));
   // T1 contains T2 with p1 in a vertex region
-  EXPECT_TRUE(ccw_overlap_2d<double>(P{-1, -1}, P{10, -1}, P{-1, 10}, a, b, c));
+  EXPECT_TRUE(ccw({-1, -1}, {10, -1}, {-1, 10}));
   // collinear edges overlapping: the case Möller's edge test misses
-  EXPECT_TRUE(ccw_overlap_2d<double>(P{5, 0}, P{-1, 0}, P{7, -2}, a, b, c));
+  EXPECT_TRUE(ccw({5, 0}, {-1, 0}, {7, -2}));
   // ... and collinear but apart
-  EXPECT_FALSE(ccw_overlap_2d<double>(P{5, 0}, P{7, -2}, P{9, 0}, a, b, c));
+  EXPECT_FALSE(ccw({5, 0}, {7, -2}, {9, 0}));
 }
+
 
 // Small integers in [-3, 3]: many vertices fall on planes and edges, so every branch of the
 // case analysis is exercised, and every endpoint is to within rounding of the exact one.

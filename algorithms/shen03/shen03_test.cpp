@@ -14,43 +14,17 @@ TRITRI_ALGORITHM_CONFORMANCE(Shen03, "shen03", exact)
 namespace tritri::shen03 {
 namespace {
 
-TEST(Shen03Pieces, VertexPlaneDistancesAreLengths) {
-  double d[3];
-  int s[3];
-  signed_distances(kFloor, tri({0, 0, 3}, {1, 1, -2}, {2, 2, 5e-8}), d, s);
-  EXPECT_EQ(d[0], 3.0);
-  EXPECT_EQ(d[1], -2.0);
-  EXPECT_EQ(s[0], 1);
-  EXPECT_EQ(s[1], -1);
-  EXPECT_EQ(s[2], 0);  // 5e-8 is within the tolerance
-}
 
-TEST(Shen03Pieces, LineDistanceIsSignedAndALength) {
-  // the x axis, and the line through (0,0,2) along y: 2 apart
-  const Vec3<double> a(0, 0, 0), b(1, 0, 0);
-  EXPECT_DOUBLE_EQ(line_distance<double>(a, b, {0, 0, 2}, {0, 5, 2}), -2.0);
-  EXPECT_DOUBLE_EQ(line_distance<double>(a, b, {0, 5, 2}, {0, 0, 2}), 2.0);
-  EXPECT_EQ(line_distance<double>(a, b, {3, -1, 0}, {3, 1, 0}), 0.0);  // they meet
-  // the sign is Guigue–Devillers' orientation [a,b,c,d]
-  EXPECT_EQ(guigue03::FloatPredicates<double>::orient3d(a, b, {0, 0, 2}, {0, 5, 2}), -1);
-  EXPECT_EQ(guigue03::FloatPredicates<double>::orient3d(a, b, {0, 5, 2}, {0, 0, 2}), 1);
-}
-
-TEST(Shen03Pieces, ToleranceIsAbsoluteAndBelowItCountsAsZero) {
-  EXPECT_EQ(tolerant_sign(1e-7), 0);
-  EXPECT_EQ(tolerant_sign(-1e-7), 0);
-  EXPECT_EQ(tolerant_sign(1.5e-7), 1);
-  EXPECT_EQ(tolerant_sign(-1.5e-7), -1);
-}
-
+// The published tolerance is on N·X + d, unnormalised: kFloor's |N| is 16, so a height below
+// 1e-7 / 16 = 6.25e-9 counts as 0 (and would be 4 times larger for a floor half the size).
 TEST(Shen03, NearMissesWithinTheToleranceCountAsTouching) {
   auto hovering = [](double h) { return TrianglePair{kFloor, tri({1, 1, h}, {1, 1, 3}, {3, 2, 3})}; };
-  EXPECT_TRUE(overlap(hovering(5e-8)));   // apart by 5e-8: reported overlapping (by design)
-  EXPECT_FALSE(overlap(hovering(5e-7)));  // apart by 5e-7: rejected
+  EXPECT_TRUE(overlap(hovering(5e-9)));   // apart by 5e-9: 16 h = 8e-8, reported touching
+  EXPECT_FALSE(overlap(hovering(5e-8)));  // apart by 5e-8: 16 h = 8e-7, rejected
   EXPECT_TRUE(overlap(hovering(0)));
   // a near-coplanar pair within the tolerance takes the coplanar branch
-  EXPECT_TRUE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-8}, {5, 1, 5e-8}, {1, 5, 5e-8})}));
-  EXPECT_FALSE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-6}, {5, 1, 5e-6}, {1, 5, 5e-6})}));
+  EXPECT_TRUE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-9}, {5, 1, 5e-9}, {1, 5, 5e-9})}));
+  EXPECT_FALSE(overlap(TrianglePair{kFloor, tri({1, 1, 5e-8}, {5, 1, 5e-8}, {1, 5, 5e-8})}));
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ int run_answer(int argc, char** argv);
 int run_check(int argc, char** argv);
 int run_show(int argc, char** argv);
 int run_compare(int argc, char** argv);
+int run_diff(int argc, char** argv);  // harness/cli/cmd_diff.cpp: two algorithms' answers, case by case
 int run_corpus(int argc, char** argv);
 int run_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
 int run_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/

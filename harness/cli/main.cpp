@@ -20,6 +20,7 @@ constexpr Command kCommands[] = {
     {"bench", "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)", run_bench},
     {"scene", "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files", run_scene},
     {"compare", "what changed between two check or bench results (with a U test for times)", run_compare},
+    {"diff", "where two algorithms answer differently (e.g. a port and its authors' code)", run_diff},
 };
 
 void print_usage(std::ostream& out) {

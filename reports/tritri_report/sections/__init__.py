@@ -10,7 +10,7 @@ A section is a module with
 The report writes each heading, then calls render.
 """
 
-from . import (asymmetry, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
+from . import (asymmetry, authors, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
                sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
 
 SECTIONS = [
@@ -30,6 +30,7 @@ SECTIONS = [
     sabharwal15,
     yuhe13,
     unquoted,
+    authors,
     scenes,
     gallery,
     provenance,

@@ -1,0 +1,11 @@
+// TRITRI_FORCE_INLINE: for the few helpers of a port that GCC's -O2 heuristics leave out of
+// line although each is called from one place per variant. The published codes the ports follow
+// write these steps as macros, inlined by construction; a port that is to run as fast as its
+// original needs the same (algorithms/moller97/README.md has the measurement).
+#pragma once
+
+#if defined(__GNUC__) || defined(__clang__)
+#define TRITRI_FORCE_INLINE [[gnu::always_inline]] inline
+#else
+#define TRITRI_FORCE_INLINE inline
+#endif

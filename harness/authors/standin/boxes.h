@@ -1,0 +1,24 @@
+/* The stand-in's one test, shared by every stand-in routine: do the triangles' axis-aligned
+ * bounding boxes meet? Not a triangle-triangle test (it says yes to many disjoint pairs): it is
+ * here so that CI, which has no copy of the authors' code, can build the authors'-code plug-ins
+ * and run `tritri diff` and `tritri bench` on them (harness/authors/CMakeLists.txt). The stand-in
+ * files declare float arrays, as the originals do, so that scripts/authors-code's float->double
+ * change is exercised; this header is not copied, so it is a macro that works on either type. */
+#ifndef STANDIN_BOXES_H
+#define STANDIN_BOXES_H
+
+#define STANDIN_MAX3(a, b, c) ((a) > (b) ? ((a) > (c) ? (a) : (c)) : ((b) > (c) ? (b) : (c)))
+#define STANDIN_MIN3(a, b, c) ((a) < (b) ? ((a) < (c) ? (a) : (c)) : ((b) < (c) ? (b) : (c)))
+
+/* Sets `meet` to 1 when the boxes of (a0, a1, a2) and (b0, b1, b2) meet on every axis, else 0. */
+#define STANDIN_BOXES_MEET(a0, a1, a2, b0, b1, b2, meet)                                      \
+  do {                                                                                        \
+    int k_;                                                                                   \
+    (meet) = 1;                                                                               \
+    for (k_ = 0; k_ < 3; ++k_)                                                                \
+      if (STANDIN_MAX3(a0[k_], a1[k_], a2[k_]) < STANDIN_MIN3(b0[k_], b1[k_], b2[k_]) ||      \
+          STANDIN_MAX3(b0[k_], b1[k_], b2[k_]) < STANDIN_MIN3(a0[k_], a1[k_], a2[k_]))        \
+        (meet) = 0;                                                                           \
+  } while (0)
+
+#endif

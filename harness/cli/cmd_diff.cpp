@@ -1,0 +1,208 @@
+// `tritri diff`: where two algorithms answer differently, case by case. Made to set a port
+// beside its authors' code (scripts/authors-code builds the originals as plug-ins), it works
+// for any two algorithms: no oracle is involved, only the two answers.
+#include "harness/cli/args.hpp"
+#include "harness/check/check.hpp"
+#include "harness/check/judge.hpp"
+#include "harness/cli/commands.hpp"
+#include "cases/util/atomic_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <iostream>
+#include <map>
+
+namespace tritri::cli {
+namespace {
+
+struct Difference {
+  std::size_t case_index;
+  std::string level;  // "overlap", "segment", or "fate" (one side crashed, hung or declined)
+  std::string a, b;   // the two answers, as words
+};
+
+struct FamilyTally {
+  std::size_t cases = 0, differ = 0;
+};
+
+struct PairResult {
+  const Algorithm* a = nullptr;
+  const Algorithm* b = nullptr;
+  bool segment = false;  // both answer the segment level: it is compared too
+  std::size_t overlap_differ = 0, segment_differ = 0, fate_differ = 0;
+  std::map<std::string, FamilyTally> families;
+  std::vector<Difference> differences;
+};
+
+// The answer that decides overlap: the overlap level, else the relation's dimension, else the
+// segment (as `tritri answer` and the judge derive it).
+std::string overlap_word(const Algorithm& algorithm, const Answers& answers) {
+  if (answers.declined) return "unsupported";
+  if (algorithm.answers(Level::overlap)) return std::string(to_string(answers.overlap));
+  if (algorithm.answers(Level::relation)) return std::string(to_string(implied_overlap(answers.relation)));
+  return std::string(to_string(implied_overlap(answers.segment)));
+}
+
+// Same kind and, for a point or a segment, the same bits in every coordinate: a port that is
+// the published arithmetic gives the published ends exactly, ties included.
+bool same_segment(const SegmentAnswer& x, const SegmentAnswer& y) {
+  if (x.kind != y.kind) return false;
+  if (x.kind != SegmentKind::point && x.kind != SegmentKind::segment) return true;
+  return std::memcmp(x.p.data(), y.p.data(), 3 * sizeof(double)) == 0 &&
+         std::memcmp(x.q.data(), y.q.data(), 3 * sizeof(double)) == 0;
+}
+
+std::string fate_word(const Answers& answers) {
+  if (answers.fate != Fate::ok) return std::string(to_string(answers.fate));
+  return answers.declined ? "unsupported" : "ok";
+}
+
+PairResult compare_pair(const Algorithm& a, const Algorithm& b, const std::vector<Case>& cases,
+                        const IsolationOptions& isolation) {
+  PairResult r;
+  r.a = &a;
+  r.b = &b;
+  r.segment = a.answers(Level::segment) && b.answers(Level::segment);
+  const auto answers_a = answer_cases(a, cases, isolation);
+  const auto answers_b = answer_cases(b, cases, isolation);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Answers& x = answers_a[i];
+    const Answers& y = answers_b[i];
+    FamilyTally& tally = r.families[cases[i].family()];
+    ++tally.cases;
+    std::optional<Difference> d;
+    if (x.fate != Fate::ok || y.fate != Fate::ok || x.declined != y.declined) {
+      if (fate_word(x) != fate_word(y)) {  // both crashed alike: no difference to report
+        d = Difference{i, "fate", fate_word(x), fate_word(y)};
+        ++r.fate_differ;
+      }
+    } else if (overlap_word(a, x) != overlap_word(b, y)) {
+      d = Difference{i, "overlap", overlap_word(a, x), overlap_word(b, y)};
+      ++r.overlap_differ;
+    } else if (r.segment && !x.declined && !same_segment(x.segment, y.segment)) {
+      d = Difference{i, "segment", segment_text(x.segment), segment_text(y.segment)};
+      ++r.segment_differ;
+    }
+    if (!d) continue;
+    ++tally.differ;
+    r.differences.push_back(*d);
+  }
+  return r;
+}
+
+std::size_t total(const PairResult& r) { return r.overlap_differ + r.segment_differ + r.fate_differ; }
+
+void print_pair(std::ostream& out, const PairResult& r, const std::vector<Case>& cases, std::size_t max_examples) {
+  out << r.a->name << " vs " << r.b->name << ": " << cases.size() << " cases, " << total(r)
+      << " answered differently (overlap " << r.overlap_differ << ", segment "
+      << (r.segment ? std::to_string(r.segment_differ) : std::string("-")) << ", crash/timeout/unsupported "
+      << r.fate_differ << ")\n";
+  out << "  family\tcases\tdiffer\n";
+  for (const auto& [family, t] : r.families)
+    if (t.differ > 0) out << "  " << family << '\t' << t.cases << '\t' << t.differ << '\n';
+  // Paste-ready: the first few per family, each as a comment and the case in hex floats.
+  std::map<std::string, std::size_t> shown;
+  for (const auto& d : r.differences) {
+    const Case& c = cases[d.case_index];
+    if (shown[c.family()]++ >= max_examples) continue;
+    out << "# " << c.family() << ": " << d.level << ' ' << r.a->name << '=' << d.a << ' ' << r.b->name << '='
+        << d.b << '\n'
+        << format_case(c, NumberStyle::hex) << '\n';
+  }
+  out << '\n';
+}
+
+nlohmann::json pair_json(const PairResult& r, const std::vector<Case>& cases, std::size_t max_examples) {
+  nlohmann::json j = {{"a", r.a->name},
+                      {"b", r.b->name},
+                      {"segment_compared", r.segment},
+                      {"cases", cases.size()},
+                      {"differ", total(r)},
+                      {"overlap_differ", r.overlap_differ},
+                      {"segment_differ", r.segment_differ},
+                      {"fate_differ", r.fate_differ}};
+  nlohmann::json families = nlohmann::json::array();
+  for (const auto& [family, t] : r.families)
+    families.push_back({{"family", family}, {"cases", t.cases}, {"differ", t.differ}});
+  j["families"] = families;
+  nlohmann::json examples = nlohmann::json::array();
+  std::map<std::string, std::size_t> shown;
+  for (const auto& d : r.differences) {
+    const Case& c = cases[d.case_index];
+    if (shown[c.family()]++ >= max_examples) continue;
+    examples.push_back({{"name", c.name}, {"family", c.family()}, {"level", d.level}, {"a", d.a}, {"b", d.b},
+                        {"case", format_case(c, NumberStyle::hex)}});
+  }
+  j["examples"] = examples;
+  return j;
+}
+
+// The pairs to compare: --pair A=B (repeatable), or exactly two --algo.
+std::vector<std::pair<const Algorithm*, const Algorithm*>> chosen_pairs(const Args& args) {
+  std::vector<std::pair<const Algorithm*, const Algorithm*>> pairs;
+  for (const auto& p : args.values("--pair")) {
+    const auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == p.size())
+      throw UsageError("--pair takes A=B (two algorithm names), not '" + p + "'");
+    const auto a = select_algorithms({p.substr(0, eq)});
+    const auto b = select_algorithms({p.substr(eq + 1)});
+    pairs.emplace_back(a.front(), b.front());
+  }
+  const auto algos = args.values("--algo");
+  if (!algos.empty()) {
+    const auto chosen = select_algorithms(algos);
+    if (chosen.size() != 2) throw UsageError("diff compares exactly two --algo (or use --pair A=B)");
+    pairs.emplace_back(chosen[0], chosen[1]);
+  }
+  if (pairs.empty()) throw UsageError("diff needs two --algo NAME, or --pair A=B");
+  return pairs;
+}
+
+const char* const kDiffHelp =
+    "usage: tritri diff (--algo A --algo B | --pair A=B...) [--json OUT] [--examples N]\n"
+    "                   [--plugin LIB | --exec COMMAND]... FILE...\n\n"
+    "Where two algorithms answer differently, case by case (no oracle: only their answers).\n"
+    "Made for a port against its authors' code (scripts/authors-code builds the originals as\n"
+    "plug-ins named orig-PORT): e.g.\n"
+    "  tritri diff --plugin build/authors/libguigue-overlap.so --pair guigue03=orig-guigue03 FILE...\n"
+    "Compared: the overlap answer (from the overlap level, else the relation, else the segment);\n"
+    "when both answer the segment level, the segment too (same kind, and the same bits in every\n"
+    "coordinate of its ends); a case where one side crashed, hung or was not called counts as a\n"
+    "difference of its own ('crash/timeout/unsupported').\n"
+    "Printed per pair: the counts, the families with differences, then the first N (--examples,\n"
+    "default 3) differing cases of each family, paste-ready (a comment, then the case in hex).\n"
+    "  --json OUT      also write the result as JSON (schema tritri-diff/1: per pair the counts,\n"
+    "                  per family cases and differ, and the examples)\n"
+    "  --pair A=B      a pair to compare (repeatable); or give exactly two --algo\n";
+
+}  // namespace
+
+int run_diff(int argc, char** argv) {
+  Args args(argc, argv, with({"--algo", "--pair", "--json", "--examples"}, kRunValuedOptions), kRunFlags);
+  if (args.help()) {
+    std::cout << kDiffHelp << '\n' << kRunOptionsHelp
+              << "\nExit status: 0 when every pair answers alike; 1 when some differ; 2 on bad arguments or input.\n";
+    return kOk;
+  }
+  load_external_algorithms(args);
+  const auto pairs = chosen_pairs(args);
+  if (args.positional().empty()) throw UsageError("diff needs case files");
+  const std::size_t max_examples = args.count("--examples", 3);
+  const auto cases = load_cases(args.positional());
+  const auto isolation = isolation_options(args);
+  nlohmann::json out = {{"schema", "tritri-diff/1"}, {"inputs", args.positional()}, {"case_count", cases.size()}};
+  out["pairs"] = nlohmann::json::array();
+  bool any = false;
+  for (const auto& [a, b] : pairs) {
+    const PairResult r = compare_pair(*a, *b, cases, isolation);
+    any = any || total(r) > 0;
+    print_pair(std::cout, r, cases, max_examples);
+    out["pairs"].push_back(pair_json(r, cases, max_examples));
+  }
+  if (auto path = args.value("--json"))
+    write_file_atomically(*path, [&](std::ostream& o) { o << out.dump(1) << '\n'; });
+  return any ? kFindings : kOk;
+}
+
+}  // namespace tritri::cli
