@@ -80,6 +80,13 @@ double pair_size(const TrianglePair& pair) {
   return (hi - lo).norm();
 }
 
+Overlap overlap_of(const Algorithm& algorithm, const Answers& a) {
+  if (algorithm.answers(Level::overlap)) return a.overlap;
+  if (algorithm.answers(Level::relation)) return implied_overlap(a.relation);
+  if (algorithm.answers(Level::segment)) return implied_overlap(a.segment);
+  return Overlap::unsupported;
+}
+
 std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases,
                                   const IsolationOptions& isolation) {
   std::vector<Answers> answers(cases.size());
@@ -165,10 +172,7 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
 
   // Overlap: from the overlap level, else what the relation decides, else the segment's.
   const Truth judged = truth_of(truth);
-  const Overlap overlap = algorithm.answers(Level::overlap)    ? a.overlap
-                          : algorithm.answers(Level::relation) ? implied_overlap(a.relation)
-                          : algorithm.answers(Level::segment)  ? implied_overlap(a.segment)
-                                                               : Overlap::unsupported;
+  const Overlap overlap = overlap_of(algorithm, a);
   bool unsupported = false;
   switch (judge_overlap(overlap, judged)) {
     case Verdict::unsupported: unsupported = true; break;

@@ -31,6 +31,10 @@ struct Answers {
 std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases,
                                   const IsolationOptions& isolation = {});
 
+// What the answers say about overlap: the overlap level's answer, else what the relation decides,
+// else what the segment implies (the judge's rules, harness/check/judge.hpp).
+Overlap overlap_of(const Algorithm& algorithm, const Answers& answers);
+
 // A disagreement with the oracle. `answer` and `expected` are the vocabulary's words.
 struct Failure {
   std::string algorithm;

@@ -73,6 +73,16 @@ Tagged invariance_cases(const std::vector<Case>& bases, std::uint64_t seed) {
   return out;
 }
 
+// Every answer with its overlap filled in as the judge reads it (an algorithm that answers only the
+// relation is scored by what its relation decides).
+std::vector<Answers> answers_for_overlap(const Algorithm& algorithm, const std::vector<Case>& cases,
+                                         const IsolationOptions& isolation) {
+  std::vector<Answers> answers = answer_cases(algorithm, cases, isolation);
+  for (Answers& a : answers)
+    if (!a.declined && a.fate == Fate::ok) a.overlap = overlap_of(algorithm, a);
+  return answers;
+}
+
 // An answer as one token: the overlap value, or a fault; -1 when the harness declined the case.
 int token(const Answers& a) {
   if (a.declined) return -1;
@@ -150,7 +160,7 @@ std::vector<Probe> run_probes(const Algorithm& algorithm, const std::vector<Prob
     base.pair = {floor, s.second};
     corpus::add_symmetry_variants(base, 72, rng, cases);
   }
-  const std::vector<Answers> answers = answer_cases(algorithm, cases, isolation);
+  const std::vector<Answers> answers = answers_for_overlap(algorithm, cases, isolation);
   std::vector<Probe> out;
   for (std::size_t p = 0; p < specs.size(); ++p) {
     Probe probe{specs[p].name, specs[p].truth};
@@ -195,7 +205,7 @@ Scorecard compute_scorecard(const Algorithm& algorithm, const std::vector<Case>&
   card.declared_boundary = algorithm.boundary == Boundary::closed ? "closed" : "open";
   card.declared_degenerate = algorithm.accepts_degenerate;
   const Tagged tagged = invariance_cases(bases, options.seed);
-  const std::vector<Answers> answers = answer_cases(algorithm, tagged.cases, isolation);
+  const std::vector<Answers> answers = answers_for_overlap(algorithm, tagged.cases, isolation);
   card.invariance = tally_invariance(tagged, answers, bases.size());
   card.touching = run_probes(algorithm, touching_specs(), isolation);
   // What the algorithm does with degenerate input when it is called anyway, as a user would.
@@ -203,8 +213,8 @@ Scorecard compute_scorecard(const Algorithm& algorithm, const std::vector<Case>&
   unguarded.accepts_degenerate = true;
   card.degenerate = run_probes(unguarded, degenerate_specs(), isolation);
   if (auto on_float = algorithm.on_scalar(Scalar::float_)) {
-    const std::vector<Answers> floats = answer_cases(*on_float, bases, isolation);
-    const std::vector<Answers> doubles = answer_cases(algorithm, bases, isolation);
+    const std::vector<Answers> floats = answers_for_overlap(*on_float, bases, isolation);
+    const std::vector<Answers> doubles = answers_for_overlap(algorithm, bases, isolation);
     card.float_differs = 0;
     for (std::size_t i = 0; i < bases.size(); ++i) {
       if (token(doubles[i]) < 0) continue;
