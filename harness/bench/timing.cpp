@@ -165,8 +165,10 @@ const Algorithm& harness_floor() {
 }
 
 void init_google_benchmark(const Options& options) {
+  // Google Benchmark keeps a pointer to argv[0] (the program name it prints in the context), so it
+  // must outlive this call; the flags themselves are parsed and copied here.
+  static char program_name[] = "tritri-bench";
   std::vector<std::string> flags = {
-      "tritri-bench",
       "--benchmark_repetitions=" + std::to_string(std::max(1, options.repetitions)),
       "--benchmark_enable_random_interleaving=" + std::string(options.interleave ? "true" : "false"),
       "--benchmark_min_time=" + std::to_string(options.min_time),
@@ -176,7 +178,7 @@ void init_google_benchmark(const Options& options) {
   // Initialize to the next, and the tests run several benches in one process.
   flags.push_back("--benchmark_filter=" + options.filter);
   flags.push_back("--benchmark_list_tests=" + std::string(options.list_only ? "true" : "false"));
-  std::vector<char*> argv;
+  std::vector<char*> argv = {program_name};
   for (auto& f : flags) argv.push_back(f.data());
   int argc = static_cast<int>(argv.size());
   benchmark::Initialize(&argc, argv.data());
