@@ -5,17 +5,7 @@
 
 #include "tri_tri_intersect.c"
 
-static void overlap(const double* pairs, size_t n, unsigned char* out) {
-  size_t i;
-  for (i = 0; i < n; ++i)
-    out[i] = tri_tri_overlap_test_3d(TRITRI_VERTEX(pairs, i, 0), TRITRI_VERTEX(pairs, i, 1), TRITRI_VERTEX(pairs, i, 2),
-                                     TRITRI_VERTEX(pairs, i, 3), TRITRI_VERTEX(pairs, i, 4), TRITRI_VERTEX(pairs, i, 5))
-                 ? TRITRI_YES
-                 : TRITRI_NO;
-}
+TRITRI_AUTHORS_OVERLAP(tri_tri_overlap_test_3d)
 
-static const tritri_plugin kPlugin = {
-    TRITRI_PLUGIN_ABI, "orig-guigue03", "jgt-code Volume_08/Number_1/Guigue2003/tri_tri_intersect.c",
-    "the authors' code: tri_tri_overlap_test_3d", 1, 0.0, 0, 0, 0, overlap, 0, 0};
-
-TRITRI_AUTHORS_EXPORT const tritri_plugin* tritri_plugin_entry(void) { return &kPlugin; }
+TRITRI_AUTHORS_PLUGIN("orig-guigue03", "jgt-code Volume_08/Number_1/Guigue2003/tri_tri_intersect.c",
+                      "the authors' code: tri_tri_overlap_test_3d", 0.0, 0, 0)

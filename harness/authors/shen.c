@@ -6,18 +6,8 @@
 
 #include "tri_tri.c"
 
-static void overlap(const double* pairs, size_t n, unsigned char* out) {
-  size_t i;
-  for (i = 0; i < n; ++i)
-    out[i] = tri_tri_intersect(TRITRI_VERTEX(pairs, i, 0), TRITRI_VERTEX(pairs, i, 1), TRITRI_VERTEX(pairs, i, 2),
-                               TRITRI_VERTEX(pairs, i, 3), TRITRI_VERTEX(pairs, i, 4), TRITRI_VERTEX(pairs, i, 5))
-                 ? TRITRI_YES
-                 : TRITRI_NO;
-}
+TRITRI_AUTHORS_OVERLAP(tri_tri_intersect)
 
-static const tritri_plugin kPlugin = {
-    TRITRI_PLUGIN_ABI, "orig-shen03", "jgt-code Volume_08/Number_1/Shen2003/tri_tri.c",
-    "the authors' code: tri_tri_intersect, float changed to double", 1, 1e-7,
-    "|N·V + d| and the line-line triple products, unnormalised", 0, 0, overlap, 0, 0};
-
-TRITRI_AUTHORS_EXPORT const tritri_plugin* tritri_plugin_entry(void) { return &kPlugin; }
+TRITRI_AUTHORS_PLUGIN("orig-shen03", "jgt-code Volume_08/Number_1/Shen2003/tri_tri.c",
+                      "the authors' code: tri_tri_intersect, float changed to double", 1e-7,
+                      "|N·V + d| and the line-line triple products, unnormalised", 0)

@@ -23,8 +23,5 @@ static void overlap(const double* pairs, size_t n, unsigned char* out) {
   }
 }
 
-static const tritri_plugin kPlugin = {
-    TRITRI_PLUGIN_ABI, "orig-tropp06", "the authors' tr_tri_intersect3D (Tropp, Tal, Shimshoni 2006)",
-    "the authors' code: tr_tri_intersect3D", 1, 0.0, 0, 0, 0, overlap, 0, 0};
-
-TRITRI_AUTHORS_EXPORT const tritri_plugin* tritri_plugin_entry(void) { return &kPlugin; }
+TRITRI_AUTHORS_PLUGIN("orig-tropp06", "the authors' tr_tri_intersect3D (Tropp, Tal, Shimshoni 2006)",
+                      "the authors' code: tr_tri_intersect3D", 0.0, 0, 0)

@@ -21,4 +21,19 @@
         (meet) = 0;                                                                           \
   } while (0)
 
+/* The stand-in's segment routines: where the boxes meet, the "segment" is the first triangle's
+ * edge a0 to a1 (not coplanar), returned as 1; else 0. */
+#define STANDIN_BOXES_SEGMENT(a0, a1, a2, b0, b1, b2, coplanar, end1, end2)                     \
+  do {                                                                                        \
+    int j_, meet_;                                                                            \
+    STANDIN_BOXES_MEET(a0, a1, a2, b0, b1, b2, meet_);                                        \
+    if (!meet_) return 0;                                                                     \
+    *(coplanar) = 0;                                                                          \
+    for (j_ = 0; j_ < 3; ++j_) {                                                              \
+      (end1)[j_] = (a0)[j_];                                                                  \
+      (end2)[j_] = (a1)[j_];                                                                  \
+    }                                                                                         \
+    return 1;                                                                                 \
+  } while (0)
+
 #endif

@@ -17,14 +17,5 @@ int NoDivTriTriIsect(float V0[3], float V1[3], float V2[3], float U0[3], float U
 /* The "segment" is V0 to V1 whenever the boxes meet. */
 int tri_tri_intersect_with_isectline(float V0[3], float V1[3], float V2[3], float U0[3], float U1[3],
                                      float U2[3], int* coplanar, float isectpt1[3], float isectpt2[3]) {
-  int k;
-  int meet;
-  STANDIN_BOXES_MEET(V0, V1, V2, U0, U1, U2, meet);
-  if (!meet) return 0;
-  *coplanar = 0;
-  for (k = 0; k < 3; ++k) {
-    isectpt1[k] = V0[k];
-    isectpt2[k] = V1[k];
-  }
-  return 1;
+  STANDIN_BOXES_SEGMENT(V0, V1, V2, U0, U1, U2, coplanar, isectpt1, isectpt2);
 }

@@ -10,12 +10,5 @@ int tri_tri_overlap_test_3d(double p1[3], double q1[3], double r1[3], double p2[
 
 int tri_tri_intersection_test_3d(double p1[3], double q1[3], double r1[3], double p2[3], double q2[3],
                                  double r2[3], int* coplanar, double source[3], double target[3]) {
-  int k;
-  if (!tri_tri_overlap_test_3d(p1, q1, r1, p2, q2, r2)) return 0;
-  *coplanar = 0;
-  for (k = 0; k < 3; ++k) {
-    source[k] = p1[k];
-    target[k] = q1[k];
-  }
-  return 1;
+  STANDIN_BOXES_SEGMENT(p1, q1, r1, p2, q2, r2, coplanar, source, target);
 }
