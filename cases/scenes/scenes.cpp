@@ -60,7 +60,7 @@ double inradius(const Mesh& m) {
 
 // ------------------------------------------------------------------------------------- scenes
 // Each builder adds the bodies (and the deformation) to a scene whose name, description, seed,
-// frames and flags the catalogue below has already filled in; `small` is Size::Small.
+// frames, self and exact the catalogue below has already filled in; `small` is Size::Small.
 
 void approach(Scene& s, const SceneConfig&, bool small) {
   const int level = small ? 2 : 4;
@@ -184,62 +184,47 @@ void mesh_sphere(Scene& s, const SceneConfig& c, bool) {
 // ------------------------------------------------------------------------------ the catalogue
 
 enum class Source : std::uint8_t { procedural, cgal_data, user_mesh };
-enum Flags : unsigned { kNone = 0, kSelf = 1, kExact = 2, kOneFrame = 4 };
+// How the scene moves: bodies in motion (exact: by dyadic translations only), or one mesh
+// against itself, deformed over the frames or static (one frame).
+enum class Kind : std::uint8_t { moving, moving_exact, self_deforming, self_static };
 
 struct Entry {
   const char* name;
   std::uint64_t seed;
   Source source;
-  unsigned flags;  // Flags
+  Kind kind;
   void (*build)(Scene&, const SceneConfig&, bool small);
   const char* description;
 };
 
 // clang-format off
 const Entry kScenes[] = {
-    {"approach", 11, Source::procedural, kNone, approach,
-     "noisy blob (r~1) flies along -x into a sphere (r=1) while turning about z: "
-     "separated, first contact, then centres 0.25 apart (deep penetration)"},
-    {"graze", 12, Source::procedural, kNone, graze,
-     "small sphere (r=0.5) orbits a sphere (r=1) at a constant centre distance a "
-     "quarter of the way from the sum of the polyhedra's inscribed radii to the sum "
-     "of their vertex radii: faces and vertices brush each other, contact comes and "
-     "goes from frame to frame"},
-    {"box_stack", 13, Source::procedural, kExact, box_stack,
-     "three axis-aligned subdivided boxes in resting contact (A's top and B's bottom "
-     "at z=0, B's top and C's bottom at z=1, exactly coplanar); B slides along x "
-     "off A's edges, C slides along y on B; dyadic translations only (exact)"},
-    {"rotate_through", 14, Source::procedural, kNone, rotate_through,
-     "two linked tori (R=1, r=0.25, like chain links); the second turns half a "
-     "revolution about the vertical axis through its centre, which lies on the "
-     "first one's core circle, so the tubes pass through each other"},
-    {"shell_terrain", 15, Source::procedural, kNone, shell_terrain,
-     "thin spherical shell (r=0.5, wall 2^-6) drops onto a noisy height field and "
-     "sinks into it while drifting along x"},
-    {"spindle_self", 16, Source::procedural, kSelf, spindle_self,
-     "one torus against itself while its tube radius grows from 0.75 to 1.25 "
-     "(major radius 1): a ring torus, then a spindle torus whose inner part "
-     "passes through itself around the axis"},
-    {"blobs_self", 17, Source::procedural, kSelf, blobs_self,
-     "one mesh made of two blobs (as in a merged asset) against itself; the second "
-     "component moves through the first over the frames"},
-    {"dragon_bunny", 21, Source::cgal_data, kNone, dragon_bunny,
-     "ChineseDragon-10kv flies along -x into bunny00 while turning about y "
-     "(both scaled by a power of two to an extent in [1, 2), centred)"},
-    {"knot_torus", 22, Source::cgal_data, kNone, knot_torus,
-     "knot1 fixed; a torus ring (R=0.5, r=0.1, 8192 triangles) offset by 0.35 in x "
-     "turns a full revolution about the x axis, sweeping through the knot's tube"},
-    {"bunny_self", 23, Source::cgal_data, kSelf | kOneFrame, bunny_self,
+    {"approach", 11, Source::procedural, Kind::moving, approach,
+     "noisy blob (r~1) flies along -x into a sphere (r=1) while turning about z: separated, first contact, then centres 0.25 apart (deep penetration)"},
+    {"graze", 12, Source::procedural, Kind::moving, graze,
+     "small sphere (r=0.5) orbits a sphere (r=1) at a constant centre distance a quarter of the way from the sum of the polyhedra's inscribed radii to the sum of their vertex radii: faces and vertices brush each other, contact comes and goes from frame to frame"},
+    {"box_stack", 13, Source::procedural, Kind::moving_exact, box_stack,
+     "three axis-aligned subdivided boxes in resting contact (A's top and B's bottom at z=0, B's top and C's bottom at z=1, exactly coplanar); B slides along x off A's edges, C slides along y on B; dyadic translations only (exact)"},
+    {"rotate_through", 14, Source::procedural, Kind::moving, rotate_through,
+     "two linked tori (R=1, r=0.25, like chain links); the second turns half a revolution about the vertical axis through its centre, which lies on the first one's core circle, so the tubes pass through each other"},
+    {"shell_terrain", 15, Source::procedural, Kind::moving, shell_terrain,
+     "thin spherical shell (r=0.5, wall 2^-6) drops onto a noisy height field and sinks into it while drifting along x"},
+    {"spindle_self", 16, Source::procedural, Kind::self_deforming, spindle_self,
+     "one torus against itself while its tube radius grows from 0.75 to 1.25 (major radius 1): a ring torus, then a spindle torus whose inner part passes through itself around the axis"},
+    {"blobs_self", 17, Source::procedural, Kind::self_deforming, blobs_self,
+     "one mesh made of two blobs (as in a merged asset) against itself; the second component moves through the first over the frames"},
+    {"dragon_bunny", 21, Source::cgal_data, Kind::moving, dragon_bunny,
+     "ChineseDragon-10kv flies along -x into bunny00 while turning about y (both scaled by a power of two to an extent in [1, 2), centred)"},
+    {"knot_torus", 22, Source::cgal_data, Kind::moving, knot_torus,
+     "knot1 fixed; a torus ring (R=0.5, r=0.1, 8192 triangles) offset by 0.35 in x turns a full revolution about the x axis, sweeping through the knot's tube"},
+    {"bunny_self", 23, Source::cgal_data, Kind::self_static, bunny_self,
      "bunny00 (a range scan) against itself, one frame"},
-    {"herd", 24, Source::cgal_data, kNone, herd,
-     "elephant, cow and fandisk (each scaled to an extent in [1, 2)) start on a "
-     "circle of radius 1.5 and converge on its centre while turning: three body "
-     "pairs per frame, grazing then interpenetrating"},
-    {"mesh_self", 31, Source::user_mesh, kSelf | kOneFrame, mesh_self,
+    {"herd", 24, Source::cgal_data, Kind::moving, herd,
+     "elephant, cow and fandisk (each scaled to an extent in [1, 2)) start on a circle of radius 1.5 and converge on its centre while turning: three body pairs per frame, grazing then interpenetrating"},
+    {"mesh_self", 31, Source::user_mesh, Kind::self_static, mesh_self,
      "the given mesh (scaled to an extent in [1, 2), centred) against itself, one frame"},
-    {"mesh_sphere", 32, Source::user_mesh, kNone, mesh_sphere,
-     "a sphere (r=0.5, 1280 triangles) flies along -x through the given mesh "
-     "(scaled to an extent in [1, 2), centred)"},
+    {"mesh_sphere", 32, Source::user_mesh, Kind::moving, mesh_sphere,
+     "a sphere (r=0.5, 1280 triangles) flies along -x through the given mesh (scaled to an extent in [1, 2), centred)"},
 };
 // clang-format on
 
@@ -286,9 +271,9 @@ Scene make_scene(const std::string& name, const SceneConfig& c) {
   s.name = e->name;
   s.description = e->description;
   s.seed = e->seed;
-  s.frames = (e->flags & kOneFrame) ? 1 : c.frames;
-  s.self = (e->flags & kSelf) != 0;
-  s.exact = (e->flags & kExact) != 0;
+  s.frames = e->kind == Kind::self_static ? 1 : c.frames;
+  s.self = e->kind == Kind::self_deforming || e->kind == Kind::self_static;
+  s.exact = e->kind == Kind::moving_exact;
   e->build(s, c, c.size == Size::Small);
   return s;
 }
