@@ -38,6 +38,22 @@ template <> struct BVType<BV::KDOP16> { using type = fcl::KDOP<double, 16>; };
 template <> struct BVType<BV::KDOP18> { using type = fcl::KDOP<double, 18>; };
 template <> struct BVType<BV::KDOP24> { using type = fcl::KDOP<double, 24>; };
 
+// Calls f(std::integral_constant<BV, kBV>{}) for the BV type bv: the one switch over BV types.
+template <class F>
+decltype(auto) with_bv(BV bv, F&& f) {
+  switch (bv) {
+    case BV::OBB: return f(std::integral_constant<BV, BV::OBB>{});
+    case BV::RSS: return f(std::integral_constant<BV, BV::RSS>{});
+    case BV::OBBRSS: return f(std::integral_constant<BV, BV::OBBRSS>{});
+    case BV::kIOS: return f(std::integral_constant<BV, BV::kIOS>{});
+    case BV::AABB: return f(std::integral_constant<BV, BV::AABB>{});
+    case BV::KDOP16: return f(std::integral_constant<BV, BV::KDOP16>{});
+    case BV::KDOP18: return f(std::integral_constant<BV, BV::KDOP18>{});
+    case BV::KDOP24: return f(std::integral_constant<BV, BV::KDOP24>{});
+  }
+  throw std::invalid_argument("bad BV");
+}
+
 // The traversal node that keeps trees local and applies the relative transform (void: none).
 template <class T> struct OrientedNode { using type = void; };
 template <> struct OrientedNode<fcl::OBB<double>> { using type = fcl::detail::MeshCollisionTraversalNodeOBB<double>; };
@@ -57,6 +73,21 @@ class Recording final : public Node {
   }
   bool canStop() const override { return false; }
 };
+
+// Runs FCL's recursion `recurse(&node)` over an initialised recording node whose setup began at
+// t0, recording its candidates into `out`; times the setup and the traversal apart.
+template <class Node, class Recurse>
+TraversalStats record(Node& node, std::vector<Candidate>& out, Clock::time_point t0, Recurse recurse) {
+  TraversalStats st;
+  node.enable_statistics = true;
+  node.out = &out;
+  st.setup_seconds = seconds_since(t0);
+  t0 = Clock::now();
+  recurse(&node, nullptr);
+  st.traverse_seconds = seconds_since(t0);
+  st.bv_tests = node.num_bv_tests;
+  return st;
+}
 
 template <class T>
 std::shared_ptr<fcl::BVHModel<T>> build_model(const Mesh& m) {
@@ -90,7 +121,6 @@ class Impl final : public BroadPhase {
   double build_seconds() const override { return build_seconds_; }
 
   TraversalStats collect(const Rigid& tf1, const Rigid& tf2, std::vector<Candidate>& out) override {
-    TraversalStats st;
     fcl::CollisionRequestd request;
     fcl::CollisionResultd result;
     if constexpr (kHasOriented) {
@@ -99,14 +129,7 @@ class Impl final : public BroadPhase {
         Recording<Oriented> node;
         fcl::detail::initialize(static_cast<Oriented&>(node), *model1_, fcl::Transform3d(tf1), *model2_,
                                 fcl::Transform3d(tf2), request, result);
-        node.enable_statistics = true;
-        node.out = &out;
-        st.setup_seconds = seconds_since(t0);
-        t0 = Clock::now();
-        fcl::detail::collide(&node, nullptr);
-        st.traverse_seconds = seconds_since(t0);
-        st.bv_tests = node.num_bv_tests;
-        return st;
+        return record(node, out, t0, fcl::detail::collide<double>);
       }
     }
     if (mode_ == Mode::Relative) throw std::logic_error("Relative mode needs an oriented BV");
@@ -118,18 +141,10 @@ class Impl final : public BroadPhase {
     const bool refit = mode_ == Mode::WorldRefit;
     fcl::detail::initialize(static_cast<fcl::detail::MeshCollisionTraversalNode<T>&>(node), c1, w1, c2, w2,
                             request, result, refit, /*refit_bottomup=*/true);
-    node.enable_statistics = true;
-    node.out = &out;
-    st.setup_seconds = seconds_since(t0);
-    t0 = Clock::now();
-    fcl::detail::collide(&node, nullptr);
-    st.traverse_seconds = seconds_since(t0);
-    st.bv_tests = node.num_bv_tests;
-    return st;
+    return record(node, out, t0, fcl::detail::collide<double>);
   }
 
   TraversalStats collect_self(std::vector<Candidate>& out) override {
-    TraversalStats st;
     if (model1_ != model2_) throw std::logic_error("collect_self on a pair broad phase");
     fcl::CollisionRequestd request;
     fcl::CollisionResultd result;
@@ -140,14 +155,7 @@ class Impl final : public BroadPhase {
     Recording<fcl::detail::MeshCollisionTraversalNode<T>> node;
     fcl::detail::initialize(static_cast<fcl::detail::MeshCollisionTraversalNode<T>&>(node), *model1_, identity,
                             *model1_, identity2, request, result);
-    node.enable_statistics = true;
-    node.out = &out;
-    st.setup_seconds = seconds_since(t0);
-    t0 = Clock::now();
-    fcl::detail::selfCollide(&node, nullptr);
-    st.traverse_seconds = seconds_since(t0);
-    st.bv_tests = node.num_bv_tests;
-    return st;
+    return record(node, out, t0, fcl::detail::selfCollide<double>);
   }
 
   CollideTiming fcl_collide(const Rigid& tf1, const Rigid& tf2, std::size_t max_contacts) override {
@@ -168,23 +176,10 @@ class Impl final : public BroadPhase {
   double build_seconds_ = 0;
 };
 
-template <BV kBV>
-std::unique_ptr<BroadPhase> make(Mode mode, const Mesh& m1, const Mesh* m2) {
-  return std::make_unique<Impl<kBV>>(mode, m1, m2);
-}
-
 std::unique_ptr<BroadPhase> dispatch(BV bv, Mode mode, const Mesh& m1, const Mesh* m2) {
-  switch (bv) {
-    case BV::OBB: return make<BV::OBB>(mode, m1, m2);
-    case BV::RSS: return make<BV::RSS>(mode, m1, m2);
-    case BV::OBBRSS: return make<BV::OBBRSS>(mode, m1, m2);
-    case BV::kIOS: return make<BV::kIOS>(mode, m1, m2);
-    case BV::AABB: return make<BV::AABB>(mode, m1, m2);
-    case BV::KDOP16: return make<BV::KDOP16>(mode, m1, m2);
-    case BV::KDOP18: return make<BV::KDOP18>(mode, m1, m2);
-    case BV::KDOP24: return make<BV::KDOP24>(mode, m1, m2);
-  }
-  throw std::invalid_argument("bad BV");
+  return with_bv(bv, [&](auto kBV) -> std::unique_ptr<BroadPhase> {
+    return std::make_unique<Impl<decltype(kBV)::value>>(mode, m1, m2);
+  });
 }
 
 // ------------------------------------------------------------------------------- BV audit
@@ -262,17 +257,7 @@ BVAudit audit_typed(const Mesh& m, bool world, const Rigid& tf, bool refit) {
 }  // namespace
 
 BVAudit audit_bvh(BV bv, const Mesh& m, bool world, const Rigid& tf, bool refit) {
-  switch (bv) {
-    case BV::OBB: return audit_typed<BV::OBB>(m, world, tf, refit);
-    case BV::RSS: return audit_typed<BV::RSS>(m, world, tf, refit);
-    case BV::OBBRSS: return audit_typed<BV::OBBRSS>(m, world, tf, refit);
-    case BV::kIOS: return audit_typed<BV::kIOS>(m, world, tf, refit);
-    case BV::AABB: return audit_typed<BV::AABB>(m, world, tf, refit);
-    case BV::KDOP16: return audit_typed<BV::KDOP16>(m, world, tf, refit);
-    case BV::KDOP18: return audit_typed<BV::KDOP18>(m, world, tf, refit);
-    case BV::KDOP24: return audit_typed<BV::KDOP24>(m, world, tf, refit);
-  }
-  throw std::invalid_argument("bad BV");
+  return with_bv(bv, [&](auto kBV) { return audit_typed<decltype(kBV)::value>(m, world, tf, refit); });
 }
 
 const char* bv_name(BV bv) {
