@@ -32,71 +32,73 @@ inline void bit_range(double x, int& lead, int& last) {
 
 // ---------------------------------------------------------------- the determinants
 
-// sign det[A1-A0, B1-B0, C1-C0]; p: the six points (3 doubles each), finite.
-inline int det3_sign(const double* const p[6]) {
-  // structural zeros
-  for (int k = 0; k < 3; ++k) {  // a column of equal coordinates
-    if (p[0][k] == p[1][k] && p[2][k] == p[3][k] && p[4][k] == p[5][k]) return ++counts().structural, 0;
+// The exponent range of n split values s[0], s[stride], ...: q the lowest exponent of a last
+// set bit, top the highest bound (|x| < 2^top); both 0 when every value is zero.
+inline void exponent_range(const Split* s, int n, int stride, int& q, int& top) {
+  q = 100000;
+  top = -100000;
+  for (int i = 0; i < n; ++i) {
+    const Split& v = s[i * stride];
+    if (v.mant == 0) continue;
+    if (v.exp < q) q = v.exp;
+    if (v.top > top) top = v.top;
   }
-  for (int r = 0; r < 3; ++r) {  // a zero row
-    const double* a = p[2 * r];
-    const double* b = p[2 * r + 1];
-    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) return ++counts().structural, 0;
-  }
-  auto same = [](const double* a, const double* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; };
-  for (int r = 0; r < 3; ++r)  // two rows from the same two points
-    for (int t = r + 1; t < 3; ++t)
-      if (same(p[2 * r], p[2 * t]) && same(p[2 * r + 1], p[2 * t + 1])) return ++counts().structural, 0;
+  if (top == -100000) q = 0, top = 0;
+}
 
-  {  // fast path: every axis converts to integers below 2^61
-    std::int64_t x[3][6];  // x[axis][point]
-    bool fast = true;
-    for (int k = 0; k < 3 && fast; ++k) {
-      const double* v[6] = {&p[0][k], &p[1][k], &p[2][k], &p[3][k], &p[4][k], &p[5][k]};
-      fast = axis_to_int61(v, 6, x[k]);
-    }
-    if (fast) {
-      ++counts().fast3;
-      std::int64_t d[3][3];  // d[row][axis], |d| < 2^62
-      for (int r = 0; r < 3; ++r)
-        for (int k = 0; k < 3; ++k) d[r][k] = x[k][2 * r + 1] - x[k][2 * r];
-      I192 acc{{0, 0, 0}};
-      for (int k = 0; k < 3; ++k) {
-        const int i = (k + 1) % 3, j = (k + 2) % 3;
-        const i128 m = static_cast<i128>(d[1][i]) * d[2][j] - static_cast<i128>(d[1][j]) * d[2][i];  // |m| < 2^125
-        acc = add192(acc, mul_128_64(m, d[0][k]));                                               // |acc| < 2^189
-      }
-      return sign192(acc);
-    }
-  }
-  Split s[6][3];
-  int q[3], top[3];
+// det3's structural zeros: a column of equal coordinates, a zero row, or two rows from the
+// same two points.
+inline bool det3_structural_zero(const double* const p[6]) {
+  auto same = [](const double* a, const double* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; };
+  for (int k = 0; k < 3; ++k)
+    if (p[0][k] == p[1][k] && p[2][k] == p[3][k] && p[4][k] == p[5][k]) return true;
+  for (int r = 0; r < 3; ++r)
+    if (same(p[2 * r], p[2 * r + 1])) return true;
+  for (int r = 0; r < 3; ++r)
+    for (int t = r + 1; t < 3; ++t)
+      if (same(p[2 * r], p[2 * t]) && same(p[2 * r + 1], p[2 * t + 1])) return true;
+  return false;
+}
+
+// The fast path: when every axis converts to integers below 2^61, sets sign and returns true.
+inline bool det3_fast(const double* const p[6], int& sign) {
+  std::int64_t x[3][6];  // x[axis][point]
   for (int k = 0; k < 3; ++k) {
-    q[k] = 100000;
-    top[k] = -100000;
-    for (int i = 0; i < 6; ++i) {
-      s[i][k] = split_double(p[i][k]);
-      if (s[i][k].mant == 0) continue;
-      if (s[i][k].exp < q[k]) q[k] = s[i][k].exp;
-      if (s[i][k].top > top[k]) top[k] = s[i][k].top;
-    }
-    if (top[k] == -100000) q[k] = 0, top[k] = 0;
+    const double* v[6] = {&p[0][k], &p[1][k], &p[2][k], &p[3][k], &p[4][k], &p[5][k]};
+    if (!axis_to_int61(v, 6, x[k])) return false;
   }
-  if (top[0] - q[0] <= 125 && top[1] - q[1] <= 125 && top[2] - q[2] <= 125) {
-    // middle path: |X| < 2^125, differences < 2^126 (2 limbs), cross terms < 2^253 (4 limbs),
-    // the dot product < 2^381 (6 limbs)
-    ++counts().middle3;
-    Fixed<2> d[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 3; ++k) d[r][k] = fixed_sub(fixed2_from(s[2 * r + 1][k], q[k]), fixed2_from(s[2 * r][k], q[k]));
-    Fixed<6> acc{{0, 0, 0, 0, 0, 0}};
-    for (int k = 0; k < 3; ++k) {
-      const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const Fixed<4> m = fixed_sub(fixed_mul(d[1][i], d[2][j]), fixed_mul(d[1][j], d[2][i]));
-      acc = fixed_add(acc, fixed_mul(m, d[0][k]));
-    }
-    return fixed_sign(acc);
+  ++counts().fast3;
+  std::int64_t d[3][3];  // d[row][axis], |d| < 2^62
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) d[r][k] = x[k][2 * r + 1] - x[k][2 * r];
+  I192 acc{{0, 0, 0}};
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const i128 m = static_cast<i128>(d[1][i]) * d[2][j] - static_cast<i128>(d[1][j]) * d[2][i];  // |m| < 2^125
+    acc = add192(acc, mul_128_64(m, d[0][k]));                                               // |acc| < 2^189
   }
+  sign = sign192(acc);
+  return true;
+}
+
+// The middle path: |X| < 2^125, differences < 2^126 (2 limbs), cross terms < 2^253 (4 limbs),
+// the dot product < 2^381 (6 limbs). s: the six points split, q: each axis's lowest exponent.
+inline int det3_middle(const Split (&s)[6][3], const int (&q)[3]) {
+  ++counts().middle3;
+  Fixed<2> d[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) d[r][k] = fixed_sub(fixed2_from(s[2 * r + 1][k], q[k]), fixed2_from(s[2 * r][k], q[k]));
+  Fixed<6> acc{{0, 0, 0, 0, 0, 0}};
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const Fixed<4> m = fixed_sub(fixed_mul(d[1][i], d[2][j]), fixed_mul(d[1][j], d[2][i]));
+    acc = fixed_add(acc, fixed_mul(m, d[0][k]));
+  }
+  return fixed_sign(acc);
+}
+
+// The wide path: any finite doubles, in Big.
+inline int det3_wide(const Split (&s)[6][3], const int (&q)[3]) {
   ++counts().wide3;
   Big d[3][3];
   for (int r = 0; r < 3; ++r)
@@ -123,6 +125,20 @@ inline int det3_sign(const double* const p[6]) {
   return acc->n == 0 ? 0 : (acc->neg ? -1 : 1);
 }
 
+// sign det[A1-A0, B1-B0, C1-C0]; p: the six points (3 doubles each), finite.
+inline int det3_sign(const double* const p[6]) {
+  if (det3_structural_zero(p)) return ++counts().structural, 0;
+  if (int sign; det3_fast(p, sign)) return sign;
+  Split s[6][3];
+  int q[3], top[3];
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 6; ++i) s[i][k] = split_double(p[i][k]);
+    exponent_range(&s[0][k], 6, 3, q[k], top[k]);
+  }
+  if (top[0] - q[0] <= 125 && top[1] - q[1] <= 125 && top[2] - q[2] <= 125) return det3_middle(s, q);
+  return det3_wide(s, q);
+}
+
 // sign of (b-a)_i (c-a)_j - (b-a)_j (c-a)_i.
 inline int det2_sign(const double* a, const double* b, const double* c, int i, int j) {
   if ((a[i] == b[i] && a[j] == b[j]) || (a[i] == c[i] && a[j] == c[j]) || (b[i] == c[i] && b[j] == c[j]) ||
@@ -145,15 +161,8 @@ inline int det2_sign(const double* a, const double* b, const double* c, int i, i
   const double* pts[3] = {a, b, c};
   for (int k = 0; k < 2; ++k) {
     const int axis = k == 0 ? i : j;
-    q[k] = 100000;
-    top[k] = -100000;
-    for (int v = 0; v < 3; ++v) {
-      s[v][k] = split_double(pts[v][axis]);
-      if (s[v][k].mant == 0) continue;
-      if (s[v][k].exp < q[k]) q[k] = s[v][k].exp;
-      if (s[v][k].top > top[k]) top[k] = s[v][k].top;
-    }
-    if (top[k] == -100000) q[k] = 0, top[k] = 0;
+    for (int v = 0; v < 3; ++v) s[v][k] = split_double(pts[v][axis]);
+    exponent_range(&s[0][k], 3, 2, q[k], top[k]);
   }
   if (top[0] - q[0] <= 125 && top[1] - q[1] <= 125) {
     ++counts().middle2;

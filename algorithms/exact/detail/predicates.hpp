@@ -136,16 +136,21 @@ struct Plain {
   static int o3_with(double value, double, P, P, P, P) { return sgn(value); }
 };
 
-struct IntExact {
+// Every sign exact, from an engine's det3_sign(p[6]) and det2_sign(a, b, c, i, j).
+template <int (*Det3)(const double* const[6]), int (*Det2)(P, P, P, int, int)>
+struct ExactSigns {
   static int d3(P a0, P a1, P b0, P b1, P c0, P c1) {
     const double* p[6] = {a0, a1, b0, b1, c0, c1};
-    return intexact::det3_sign(p);
+    return Det3(p);
   }
   static int o3(P a, P b, P c, P d) { return d3(a, b, a, c, a, d); }
-  static int o2(P a, P b, P c, int i, int j) { return intexact::det2_sign(a, b, c, i, j); }
+  static int o2(P a, P b, P c, int i, int j) { return Det2(a, b, c, i, j); }
   static int o2_with(double, double, P a, P b, P c, int i, int j) { return o2(a, b, c, i, j); }
   static int o3_with(double, double, P a, P b, P c, P d) { return o3(a, b, c, d); }
 };
+
+// The algorithm's exact engine (intexact.hpp).
+using IntExact = ExactSigns<intexact::det3_sign, intexact::det2_sign>;
 
 // The signs are computed without a branch on their value (a branch on the sign of a random
 // determinant is mispredicted half the time); the only branch is "certain?", rarely false.

@@ -214,23 +214,11 @@ inline int sign_of(double v) { return (v > 0.0) - (v < 0.0); }
 
 // ---- the window ----
 
-// Exponent of the leading bit (x = m·2^lead, 1 <= |m| < 2) and of the last set bit of a
-// finite nonzero double.
-inline void bit_range(double x, int& lead, int& last) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
-  int e0;  // exponent of mantissa bit 0
-  if (biased == 0) {
-    e0 = -1074;
-  } else {
-    mant |= std::uint64_t{1} << 52;
-    e0 = biased - 1075;
-  }
-  last = e0 + __builtin_ctzll(mant);
-  lead = e0 + 63 - __builtin_clzll(mant);
-}
+// The decoding of a double's bits is the engine's own (intarith.hpp, intexact.hpp); the
+// arithmetic on them here is independent of it.
+using intexact::bit_range;
+using intexact::Split;
+using intexact::split_double;
 
 constexpr int kWindowTop = 300;     // after scaling, every |coordinate| < 2^300
 constexpr int kWindowBottom = -300; // and every coordinate is a multiple of 2^-300
@@ -284,29 +272,13 @@ inline GmpScratch& gmp_scratch() {
 
 // out = x · 2^-base, an integer because every coordinate's last set bit is at or above base.
 inline void to_mpz(mpz_t out, double x, int base) {
-  if (x == 0.0) {
-    mpz_set_ui(out, 0);
-    return;
-  }
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
-  int e0;
-  if (biased == 0) {
-    e0 = -1074;
-  } else {
-    mant |= std::uint64_t{1} << 52;
-    e0 = biased - 1075;
-  }
-  const int tz = __builtin_ctzll(mant);  // make the exponent that of the last set bit (>= base)
-  mant >>= tz;
-  e0 += tz;
-  mpz_set_ui(out, static_cast<unsigned long>(mant >> 32));
+  const Split s = split_double(x);  // x = mant·2^exp, mant odd; 0 when x is
+  mpz_set_ui(out, static_cast<unsigned long>(s.mant >> 32));
   mpz_mul_2exp(out, out, 32);
-  mpz_add_ui(out, out, static_cast<unsigned long>(mant & 0xffffffffu));
-  mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(e0 - base));
-  if (bits >> 63) mpz_neg(out, out);
+  mpz_add_ui(out, out, static_cast<unsigned long>(s.mant & 0xffffffffu));
+  if (s.mant == 0) return;
+  mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(s.exp - base));
+  if (s.neg) mpz_neg(out, out);
 }
 
 inline int lowest_bit(const double* const* c, int n) {
@@ -434,15 +406,6 @@ namespace tritri::exactsimd {
 
 // The predicate policy on this engine, for classify<Exact, ...> in the tests: an independent
 // implementation to cross-check the integer engine of the algorithm (IntExact).
-struct Exact {
-  static int d3(P a0, P a1, P b0, P b1, P c0, P c1) {
-    const double* p[6] = {a0, a1, b0, b1, c0, c1};
-    return exact::det3_sign(p);
-  }
-  static int o3(P a, P b, P c, P d) { return d3(a, b, a, c, a, d); }
-  static int o2(P a, P b, P c, int i, int j) { return exact::det2_sign(a, b, c, i, j); }
-  static int o2_with(double, double, P a, P b, P c, int i, int j) { return o2(a, b, c, i, j); }
-  static int o3_with(double, double, P a, P b, P c, P d) { return o3(a, b, c, d); }
-};
+using Exact = ExactSigns<exact::det3_sign, exact::det2_sign>;
 
 }  // namespace tritri::exactsimd
