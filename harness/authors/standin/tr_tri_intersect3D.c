@@ -5,7 +5,7 @@
 
 int tr_tri_intersect3D(double* C1, double* P1, double* P2, double* D1, double* Q1, double* Q2) {
   double a[3][3], b[3][3];
-  int k, meet;
+  int k;
   for (k = 0; k < 3; ++k) {
     a[0][k] = C1[k];
     a[1][k] = C1[k] + P1[k];
@@ -14,6 +14,5 @@ int tr_tri_intersect3D(double* C1, double* P1, double* P2, double* D1, double* Q
     b[1][k] = D1[k] + Q1[k];
     b[2][k] = D1[k] + Q2[k];
   }
-  STANDIN_BOXES_MEET(a[0], a[1], a[2], b[0], b[1], b[2], meet);
-  return meet ? 12 : 0;
+  return STANDIN_BOXES_MEET(a[0], a[1], a[2], b[0], b[1], b[2]) ? 12 : 0;
 }
