@@ -267,6 +267,60 @@ bool cgal_read(const std::string& path, Points& points, Polys& polys, std::strin
   return ok;
 }
 
+// Refuses a file that cannot be opened or is empty, before any reader sees it.
+void check_readable(const std::string& path) {
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) throw MeshError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  if (probe.peek() == std::char_traits<char>::eof()) throw MeshError(path, 0, "file is empty");
+}
+
+// Our own scan of a text format, for line numbers and the errors CGAL lets through (PLY: none).
+TextScan scan_text(const std::string& path, const std::string& format) {
+  if (format == "off") return scan_off(path);
+  if (format == "obj") return scan_obj(path);
+  if (format != "stl") return {};
+  TextScan scan = scan_stl(path);
+  if (scan.first_error) throw MeshError(path, scan.first_error->first, scan.first_error->second);
+  return scan;
+}
+
+// Polygon j (read at `line`) of a mesh whose vertices are `points`, as triangles added to `mesh`
+// (a fan from its first corner), as the options say for polygons and degenerate triangles.
+void add_polygon(const std::vector<std::size_t>& f, std::size_t j, std::size_t line,
+                 const std::vector<K::Point_3>& points, const ReadOptions& options, const std::string& path,
+                 Mesh& mesh, std::vector<char>& used, ReadReport& rep) {
+  if (f.size() < 3)
+    throw MeshError(path, line, "face " + std::to_string(j) + " has " + std::to_string(f.size()) + " corners");
+  for (std::size_t v : f)
+    if (v >= points.size())
+      throw MeshError(path, line, "face " + std::to_string(j) + ": vertex index " + std::to_string(v) +
+                                      " outside [0, " + std::to_string(points.size()) + ")");
+  if (f.size() > 3) {
+    if (options.polygons == Polygons::Refuse)
+      throw MeshError(path, line, "face " + std::to_string(j) + " has " + std::to_string(f.size()) +
+                                      " corners and polygons are refused");
+    ++rep.fanned;
+  }
+  // A fan from the first corner: right for convex polygons, which is what mesh files carry in
+  // practice; a non-convex polygon can give overlapping triangles (not checked).
+  for (std::size_t k = 1; k + 1 < f.size(); ++k) {
+    const std::size_t a = f[0], b = f[k], c = f[k + 1];
+    std::string why;
+    if (a == b || b == c || a == c) why = "repeats a vertex";
+    else if (CGAL::collinear(points[a], points[b], points[c])) why = "has collinear corners (zero area)";
+    if (!why.empty()) {
+      if (options.degenerate == Degenerate::Refuse) {
+        std::string which = "face " + std::to_string(j);
+        if (f.size() > 3) which += " (fan triangle " + std::to_string(k - 1) + ")";
+        throw MeshError(path, line, which + " is degenerate: it " + why);
+      }
+      if (options.degenerate == Degenerate::Drop) { ++rep.dropped_degenerate; continue; }
+    }
+    mesh.faces.push_back({std::uint32_t(a), std::uint32_t(b), std::uint32_t(c)});
+    used[a] = used[b] = used[c] = 1;
+  }
+}
+
 }  // namespace
 
 MeshError::MeshError(std::string file_, std::size_t line_, const std::string& msg)
@@ -277,19 +331,8 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options, ReadReport* 
   rep.format = lower_extension(path);
   if (rep.format != "off" && rep.format != "obj" && rep.format != "ply" && rep.format != "stl")
     throw MeshError(path, 0, "unknown extension '" + rep.format + "' (OFF, OBJ, PLY or STL)");
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe) throw MeshError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-    if (probe.peek() == std::char_traits<char>::eof()) throw MeshError(path, 0, "file is empty");
-  }
-
-  TextScan scan;
-  if (rep.format == "off") scan = scan_off(path);
-  else if (rep.format == "obj") scan = scan_obj(path);
-  else if (rep.format == "stl") {
-    scan = scan_stl(path);
-    if (scan.first_error) throw MeshError(path, scan.first_error->first, scan.first_error->second);
-  }
+  check_readable(path);
+  const TextScan scan = scan_text(path, rep.format);
   auto vline = [&](std::size_t i) { return i < scan.vertex_line.size() ? scan.vertex_line[i] : 0; };
   auto fline = [&](std::size_t j) { return j < scan.face_line.size() ? scan.face_line[j] : 0; };
 
@@ -321,39 +364,7 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options, ReadReport* 
   if (points.size() > 0xFFFFFFFFull) throw MeshError(path, 0, "more than 2^32 vertices");
 
   std::vector<char> used(points.size(), 0);
-  for (std::size_t j = 0; j < polys.size(); ++j) {
-    const auto& f = polys[j];
-    if (f.size() < 3)
-      throw MeshError(path, fline(j), "face " + std::to_string(j) + " has " + std::to_string(f.size()) + " corners");
-    for (std::size_t v : f)
-      if (v >= points.size())
-        throw MeshError(path, fline(j), "face " + std::to_string(j) + ": vertex index " + std::to_string(v) +
-                                            " outside [0, " + std::to_string(points.size()) + ")");
-    if (f.size() > 3) {
-      if (options.polygons == Polygons::Refuse)
-        throw MeshError(path, fline(j), "face " + std::to_string(j) + " has " + std::to_string(f.size()) +
-                                            " corners and polygons are refused");
-      ++rep.fanned;
-    }
-    // A fan from the first corner: right for convex polygons, which is what mesh files carry in
-    // practice; a non-convex polygon can give overlapping triangles (not checked).
-    for (std::size_t k = 1; k + 1 < f.size(); ++k) {
-      const std::size_t a = f[0], b = f[k], c = f[k + 1];
-      std::string why;
-      if (a == b || b == c || a == c) why = "repeats a vertex";
-      else if (CGAL::collinear(points[a], points[b], points[c])) why = "has collinear corners (zero area)";
-      if (!why.empty()) {
-        if (options.degenerate == Degenerate::Refuse) {
-          std::string which = "face " + std::to_string(j);
-          if (f.size() > 3) which += " (fan triangle " + std::to_string(k - 1) + ")";
-          throw MeshError(path, fline(j), which + " is degenerate: it " + why);
-        }
-        if (options.degenerate == Degenerate::Drop) { ++rep.dropped_degenerate; continue; }
-      }
-      mesh.faces.push_back({std::uint32_t(a), std::uint32_t(b), std::uint32_t(c)});
-      used[a] = used[b] = used[c] = 1;
-    }
-  }
+  for (std::size_t j = 0; j < polys.size(); ++j) add_polygon(polys[j], j, fline(j), points, options, path, mesh, used, rep);
   if (mesh.faces.empty()) throw MeshError(path, 0, "no non-degenerate triangle");
   rep.triangles = mesh.faces.size();
   rep.unreferenced_vertices = std::size_t(std::count(used.begin(), used.end(), 0));
