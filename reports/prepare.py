@@ -172,24 +172,28 @@ def suites():
             print("%s\t%s\t%s" % (s["cases"], s["group_by"], s["results"]))
 
 
+# The arguments of the commands that take more than one: a positional NAME, an option
+# --NAME=DEFAULT, or a required option --NAME!.
+ARGUMENTS = {
+    "manifest": "corpus_dir out --seed=1 --command=",
+    "provenance": "out --build-dir! --command= --started=",
+    "steps": "tsv out --baseline-inputs= --baseline-verdict=",
+}
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description="helpers for scripts/run")
     sub = p.add_subparsers(dest="what", required=True)
-    m = sub.add_parser("manifest")
-    m.add_argument("corpus_dir")
-    m.add_argument("out")
-    m.add_argument("--seed", default="1")
-    m.add_argument("--command", default="")
-    v = sub.add_parser("provenance")
-    v.add_argument("out")
-    v.add_argument("--build-dir", required=True)
-    v.add_argument("--command", default="")
-    v.add_argument("--started", default="")
-    s = sub.add_parser("steps")
-    s.add_argument("tsv")
-    s.add_argument("out")
-    s.add_argument("--baseline-inputs", default="")
-    s.add_argument("--baseline-verdict", default="")
+    for what, arguments in ARGUMENTS.items():
+        command = sub.add_parser(what)
+        for a in arguments.split():
+            if a.endswith("!"):
+                command.add_argument(a[:-1], required=True)
+            elif "=" in a:
+                name, default = a.split("=", 1)
+                command.add_argument(name, default=default)
+            else:
+                command.add_argument(a)
     g = sub.add_parser("groupings")
     g.add_argument("which", choices=["symmetry", "sweeps"])
     sub.add_parser("suites")

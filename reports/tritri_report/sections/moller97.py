@@ -6,21 +6,15 @@ from ..markdown import NOT_MEASURED
 from . import papers
 
 TITLE = "Möller 1997"
-LEVEL = 3
-NUMBERED = False
+LEVEL, NUMBERED = papers.SUBSECTION
 FOLDER = "moller97"
 
 
-def render(run, part):
-    doc = run.published.get(FOLDER)
-    if not doc:
-        part.add("%s.\n" % NOT_MEASURED)
-        return
+def compare(run, part, doc):
     claims = doc["claims"]
     rows = [brute_force(run, claims["brute_force"]), faster_than_erit(run, claims["faster_than_erit"]),
             break_even(run, claims["break_even_with_erit"])]
     papers.claim_table(part, rows)
-    papers.cite(part, doc)
 
 
 def brute_force(run, claim):
@@ -88,3 +82,6 @@ def break_even(run, claim):
             "the break-even point depends on what each early exit costs on the machine: Möller saw it "
             "on the O2 and not on the Impact, so it is machine-dependent even in his measurements; "
             "and our ERIT is a reconstruction."]
+
+
+render = papers.subsection(FOLDER, compare)

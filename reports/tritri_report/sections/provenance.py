@@ -6,48 +6,70 @@ from ..markdown import NOT_MEASURED, table
 TITLE = "Provenance"
 
 
-def rows_of(run):
+# The rows of the table: a label and the places its value is read from, the first that has one
+# (a place is SOURCE.KEY, the sources as in sources() below). A value that is a table (the
+# packages) gives one row per entry, labelled "LABEL ENTRY".
+ROWS = [
+    ("machine", "provenance.machine_name"),
+    ("CPU", "provenance.cpu"),
+    ("cores", "provenance.cores"),
+    ("memory", "provenance.memory"),
+    ("OS", "provenance.os"),
+    ("kernel", "provenance.kernel"),
+    ("compiler", "provenance.compiler context.compiler"),
+    ("build type and flags", "provenance.build_flags context.compiler_flags"),
+    ("FMA contraction", "context.fp_contract"),
+    ("package", "provenance.packages"),
+    ("oracle", "check.oracle context.oracle"),
+    ("CGAL (bench context)", "context.cgal_version"),
+    ("FCL", "context.fcl_version"),
+    ("Eigen", "context.eigen_version"),
+    ("Google Benchmark", "context.google_benchmark"),
+    ("Google Benchmark library build", "context.library_build_type"),
+    ("python / matplotlib", "provenance.python"),
+    ("git SHA", "provenance.git_sha context.git_sha"),
+    ("uncommitted changes", "run.git_dirty"),
+    ("corpus command", "manifest.command"),
+    ("corpus seed", "manifest.seed"),
+    ("corpus SHA-256 (its files' names and bytes)", "manifest.sha256"),
+    ("corpus cases", "run.case_count"),
+    ("bench reference", "run.reference"),
+    ("bench seed", "context.seed"),
+    ("bench pool size", "context.pool_size"),
+    ("bench repetitions", "context.repetitions"),
+    ("bench pools hash", "context.corpus_hash"),
+    ("bench family pools from", "context.family_source"),
+    ("bench timing", "context.timing"),
+    ("load average at bench start", "context.load_avg"),
+    ("CPU frequency scaling", "context.cpu_scaling_enabled"),
+]
+
+EMPTY = (None, "", [])
+
+
+def sources(run):
+    """The places ROWS reads: the run's provenance, corpus manifest, bench context and check
+    result, and what is derived from more than one of them (run)."""
     prov = run.d.get("provenance", {})
     man = run.d.get("manifest", {})
     ctx = (run.bench or {}).get("context", {})
-    rows = []
+    check = run.check or {}
+    derived = {"git_dirty": str(prov.get("git_dirty", ctx.get("git_dirty"))),
+               "case_count": check.get("case_count", man.get("case_count")),
+               "reference": run.reference if run.bench else None}
+    return {"provenance": prov, "manifest": man, "context": ctx, "check": check, "run": derived}
 
-    def put(k, v):
-        if v not in (None, "", []):
-            rows.append([k, v])
-    put("machine", prov.get("machine_name"))
-    put("CPU", prov.get("cpu"))
-    put("cores", prov.get("cores"))
-    put("memory", prov.get("memory"))
-    put("OS", prov.get("os"))
-    put("kernel", prov.get("kernel"))
-    put("compiler", prov.get("compiler") or ctx.get("compiler"))
-    put("build type and flags", prov.get("build_flags") or ctx.get("compiler_flags"))
-    put("FMA contraction", ctx.get("fp_contract"))
-    for k, v in (prov.get("packages") or {}).items():
-        put("package " + k, v)
-    put("oracle", (run.check or {}).get("oracle") or ctx.get("oracle"))
-    put("CGAL (bench context)", ctx.get("cgal_version"))
-    put("FCL", ctx.get("fcl_version"))
-    put("Eigen", ctx.get("eigen_version"))
-    put("Google Benchmark", ctx.get("google_benchmark"))
-    put("Google Benchmark library build", ctx.get("library_build_type"))
-    put("python / matplotlib", prov.get("python"))
-    put("git SHA", prov.get("git_sha") or ctx.get("git_sha"))
-    put("uncommitted changes", str(prov.get("git_dirty", ctx.get("git_dirty"))))
-    put("corpus command", man.get("command"))
-    put("corpus seed", man.get("seed"))
-    put("corpus SHA-256 (its files' names and bytes)", man.get("sha256"))
-    put("corpus cases", (run.check or {}).get("case_count", man.get("case_count")))
-    put("bench reference", run.reference if run.bench else None)
-    put("bench seed", ctx.get("seed"))
-    put("bench pool size", ctx.get("pool_size"))
-    put("bench repetitions", ctx.get("repetitions"))
-    put("bench pools hash", ctx.get("corpus_hash"))
-    put("bench family pools from", ctx.get("family_source"))
-    put("bench timing", ctx.get("timing"))
-    put("load average at bench start", ctx.get("load_avg"))
-    put("CPU frequency scaling", ctx.get("cpu_scaling_enabled"))
+
+def rows_of(run):
+    src = sources(run)
+    rows = []
+    for label, places in ROWS:
+        values = [src[s].get(k) for s, k in (place.split(".", 1) for place in places.split())]
+        v = next((x for x in values if x not in EMPTY), None)
+        if isinstance(v, dict):
+            rows += [[label + " " + k, x] for k, x in v.items() if x not in EMPTY]
+        elif v not in EMPTY:
+            rows.append([label, v])
     return rows
 
 

@@ -8,16 +8,11 @@ from ..markdown import NOT_MEASURED, count, ns, ratio, table
 from . import papers
 
 TITLE = "Sabharwal & Leopold 2015, Table 1"
-LEVEL = 3
-NUMBERED = False
+LEVEL, NUMBERED = papers.SUBSECTION
 FOLDER = "sabharwal15"
 
 
-def render(run, part):
-    doc = run.published.get(FOLDER)
-    if not doc:
-        part.add("%s.\n" % NOT_MEASURED)
-        return
+def compare(run, part, doc):
     t1 = doc["table1"]
     pub = t1["seconds_per_pair"]
     ours = our_times(run, t1)
@@ -34,7 +29,6 @@ def render(run, part):
                  1000 * t1["overall"], 1000 * sum(pub.values()) / len(pub), "/".join(str(w[k]) for k in pub),
                  1000 * weighted))
     suite_table(run, part, doc)
-    papers.cite(part, doc)
 
 
 def our_times(run, t1):
@@ -96,3 +90,6 @@ def suite_table(run, part, doc):
                          count(t.misclassified)])
     part.add("On %s (`%s`; %s), from `%s`:\n" % (suite["what"], suite["cases"], suite["why"], suite["results"]))
     part.add(table(["algorithm", "type", "pairs", "overlap errors", "misclassified"], rows))
+
+
+render = papers.subsection(FOLDER, compare)

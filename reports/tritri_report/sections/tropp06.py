@@ -6,8 +6,7 @@ from ..markdown import NOT_MEASURED, ns, table
 from . import papers
 
 TITLE = "Tropp, Tal & Shimshoni 2006"
-LEVEL = 3
-NUMBERED = False
+LEVEL, NUMBERED = papers.SUBSECTION
 FOLDER = "tropp06"
 
 
@@ -25,11 +24,7 @@ def means_over_ratio_pools(bench, algorithm):
     return (sum(ops) / len(ops) if ops else None), (sum(times) / len(times) if times else None)
 
 
-def render(run, part):
-    doc = run.published.get(FOLDER)
-    if not run.bench or not doc:
-        part.add("%s.\n" % NOT_MEASURED)
-        return
+def compare(run, part, doc):
     faster, fewer = doc["claims"]["faster"], doc["claims"]["fewer_operations"]
     ours = faster["algorithm"]
     levels = data.primary_levels(run.bench)
@@ -47,7 +42,6 @@ def render(run, part):
     part.add("Operations and time per pair, mean over the ratio pools:\n")
     part.add(table(["algorithm", "operations/pair", "ns/pair"],
                    [[a, "%.1f" % ops_t[a] if ops_t[a] is not None else "-", ns(time_t[a])] for a in measured]))
-    papers.cite(part, doc)
 
 
 def speed_row(claim, ours, earlier, time_t, reference):
@@ -83,3 +77,6 @@ def operations_row(claim, ours, earlier, ops_t):
             "%+.1f%% against %s (add+mul+div+cmp per pair, mean over R)" % (100 * fewer, fewest), verdict,
             "we count every addition, multiplication, division and comparison executed, set-up "
             "included, averaged over the pools' mix of exits; the paper's count is per full test."]
+
+
+render = papers.subsection(FOLDER, compare, needs_bench=True)

@@ -6,19 +6,13 @@ from ..markdown import NOT_MEASURED, count, ns, table
 from . import papers
 
 TITLE = "Yu & He 2013, Table 1 and the singular suite"
-LEVEL = 3
-NUMBERED = False
+LEVEL, NUMBERED = papers.SUBSECTION
 FOLDER = "yuhe13"
 
 
-def render(run, part):
-    doc = run.published.get(FOLDER)
-    if not doc:
-        part.add("%s.\n" % NOT_MEASURED)
-        return
+def compare(run, part, doc):
     table1(run, part, doc["table1"])
     suite(run, part, doc["suite"])
-    papers.cite(part, doc)
 
 
 def table1(run, part, t1):
@@ -90,3 +84,6 @@ def suite(run, part, s):
         "differs: %s gets %d answers wrong on the rebuilt %s suite; the reason is in the cases listed (shown "
         "in full with `tritri show NAME %s`), and the rebuilt suite may not be the paper's exact "
         "configurations" % (s["algorithm"], bad, first["name"], s["cases"])))
+
+
+render = papers.subsection(FOLDER, compare)
