@@ -1,15 +1,12 @@
 // Bullet's GImpact tests on a handful of exact pairs, asserting what the float build does —
 // including its margin and its one-sidedness, which make answers wrong for the closed sets.
 #include "algorithms/bullet/bullet_peer.hpp"
+#include "harness/testing/hand_built.hpp"
 
 #include <gtest/gtest.h>
 
 namespace tritri::bullet_peer {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-Triangle reversed(const Triangle& t) { return tri(t[0], t[2], t[1]); }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 
 TEST(Bullet, TheLinkedBuildIsFloat) { EXPECT_EQ(scalar_bytes(), 4); }
 

@@ -1,15 +1,12 @@
 // ODE's trimesh–trimesh collider on a handful of exact pairs, asserting what it does —
 // including its orientation-dependent contact and its order-dependent degenerate answer.
 #include "algorithms/ode/ode_peer.hpp"
+#include "harness/testing/hand_built.hpp"
 
 #include <gtest/gtest.h>
 
 namespace tritri::ode_peer {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-Triangle reversed(const Triangle& t) { return tri(t[0], t[2], t[1]); }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 
 TEST(Ode, AnswersTheBasicRelationsBothWays) {
   for (auto* f : {&overlap, &overlap_rebuild}) {

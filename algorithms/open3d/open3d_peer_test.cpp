@@ -2,14 +2,12 @@
 // answers that are wrong for the closed sets (its epsilon and its order-dependent degenerate
 // handling): those are the library's behaviour, recorded so that a change shows.
 #include "algorithms/open3d/open3d_peer.hpp"
+#include "harness/testing/hand_built.hpp"
 
 #include <gtest/gtest.h>
 
 namespace tritri::open3d_peer {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 
 TEST(Open3d, AnswersTheBasicRelations) {
   EXPECT_TRUE(overlap({kFloor, tri({1, 1, -2}, {1, 1, 2}, {1, -3, 1})}));  // cross

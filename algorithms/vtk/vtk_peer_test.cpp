@@ -1,15 +1,12 @@
 // VTK's test on a handful of exact pairs, asserting what it does — including the coplanar
 // pairs it declines, and the opposite-normal coplanar pairs it answers "no".
 #include "algorithms/vtk/vtk_peer.hpp"
+#include "harness/testing/hand_built.hpp"
 
 #include <gtest/gtest.h>
 
 namespace tritri::vtk_peer {
 namespace {
-
-Triangle tri(Vec3<double> a, Vec3<double> b, Vec3<double> c) { return {{a, b, c}}; }
-Triangle reversed(const Triangle& t) { return tri(t[0], t[2], t[1]); }
-const Triangle kFloor = tri({0, 0, 0}, {4, 0, 0}, {0, 4, 0});
 
 TEST(Vtk, GivesTheSegmentOfCrossingPlanes) {
   const SegmentAnswer s = segment({kFloor, tri({1, 1, -2}, {1, 1, 2}, {1, -3, 1})});
