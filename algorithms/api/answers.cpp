@@ -35,6 +35,21 @@ constexpr std::array<std::pair<Level, std::string_view>, 3> kLevelNames{{
     {Level::segment, "segment"},
 }};
 
+constexpr std::array<std::pair<Overlap, std::string_view>, 3> kOverlapNames{{
+    {Overlap::no, "0"},
+    {Overlap::yes, "1"},
+    {Overlap::unsupported, "unsupported"},
+}};
+
+constexpr std::array<std::pair<SegmentKind, std::string_view>, 6> kSegmentKindNames{{
+    {SegmentKind::empty, "empty"},
+    {SegmentKind::point, "point"},
+    {SegmentKind::segment, "segment"},
+    {SegmentKind::area, "area"},
+    {SegmentKind::coplanar, "coplanar"},
+    {SegmentKind::unsupported, "unsupported"},
+}};
+
 template <class E, std::size_t N>
 std::string_view name_of(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
   for (const auto& [e, name] : table)
@@ -56,26 +71,8 @@ std::string_view to_string(Level l) { return name_of(kLevelNames, l); }
 std::string_view to_string(Relation r) { return name_of(kRelationNames, r); }
 std::string_view to_string(Dimension d) { return name_of(kDimensionNames, d); }
 
-std::string_view to_string(Overlap o) {
-  switch (o) {
-    case Overlap::no: return "0";
-    case Overlap::yes: return "1";
-    case Overlap::unsupported: return "unsupported";
-  }
-  return "?";
-}
-
-std::string_view to_string(SegmentKind k) {
-  switch (k) {
-    case SegmentKind::empty: return "empty";
-    case SegmentKind::point: return "point";
-    case SegmentKind::segment: return "segment";
-    case SegmentKind::area: return "area";
-    case SegmentKind::coplanar: return "coplanar";
-    case SegmentKind::unsupported: return "unsupported";
-  }
-  return "?";
-}
+std::string_view to_string(Overlap o) { return name_of(kOverlapNames, o); }
+std::string_view to_string(SegmentKind k) { return name_of(kSegmentKindNames, k); }
 
 std::optional<Level> parse_level(std::string_view s) { return value_of(kLevelNames, s); }
 std::optional<Relation> parse_relation(std::string_view s) { return value_of(kRelationNames, s); }
