@@ -203,6 +203,20 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
   return tally;
 }
 
+void note_family(CheckResult& result, const std::string& family) {
+  if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
+    result.families.push_back(family);
+}
+
+}  // namespace
+
+void add_tally(SegmentTally& into, const SegmentTally& t) {
+  into.answered += t.answered;
+  into.kind_mismatches += t.kind_mismatches;
+  into.not_computed += t.not_computed;
+  into.errors.insert(into.errors.end(), t.errors.begin(), t.errors.end());
+}
+
 void add_tally(Tally& into, const Tally& t) {
   into.cases += t.cases;
   into.false_positives += t.false_positives;
@@ -212,18 +226,8 @@ void add_tally(Tally& into, const Tally& t) {
   into.crashes += t.crashes;
   into.timeouts += t.timeouts;
   for (const auto& [cell, count] : t.confusion) into.confusion[cell] += count;
-  into.segment.answered += t.segment.answered;
-  into.segment.kind_mismatches += t.segment.kind_mismatches;
-  into.segment.not_computed += t.segment.not_computed;
-  into.segment.errors.insert(into.segment.errors.end(), t.segment.errors.begin(), t.segment.errors.end());
+  add_tally(into.segment, t.segment);
 }
-
-void note_family(CheckResult& result, const std::string& family) {
-  if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
-    result.families.push_back(family);
-}
-
-}  // namespace
 
 void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,

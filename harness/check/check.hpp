@@ -74,6 +74,10 @@ struct Tally {
   SegmentTally segment;             // segment level only
 };
 
+// into += t: every count, the confusion cells and the segment errors.
+void add_tally(SegmentTally& into, const SegmentTally& t);
+void add_tally(Tally& into, const Tally& t);
+
 // The Hausdorff distance between two point sets, each a point (a == b) or a segment [a, b].
 double hausdorff_distance(const Vec3<double>& a0, const Vec3<double>& a1, const Vec3<double>& b0,
                           const Vec3<double>& b1);

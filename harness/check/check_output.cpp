@@ -61,15 +61,26 @@ void for_each_tally(const CheckResult& result, Row row) {
     }
 }
 
-}  // namespace
+// Whether any of the checked algorithms answers `level`.
+bool any_answers(const CheckResult& result, Level level) {
+  return std::any_of(result.algorithms.begin(), result.algorithms.end(),
+                     [level](const Algorithm* a) { return a->answers(level); });
+}
 
-void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells) {
-  if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
-                   [](const Algorithm* a) { return a->answers(Level::relation); }))
-    return;
+// The widths of the tables' algorithm and family columns: the longest name, at least the header's.
+std::pair<std::size_t, std::size_t> column_widths(const CheckResult& result) {
   std::size_t name_width = 9, family_width = 6;
   for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
   for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  return {name_width, family_width};
+}
+
+}  // namespace
+
+void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells) {
+  if (!any_answers(result, Level::relation)) return;
+  const auto widths = column_widths(result);
+  const std::size_t name_width = widths.first, family_width = widths.second;
   out << "\nrelation confusion (answered->oracle cases; "
       << (all_cells ? "every cell" : "wrong cells only, --confusion for all") << ")\n";
   for_each_tally(result, [&](const Algorithm& a, const std::string& family, const Tally& t) {
@@ -87,12 +98,9 @@ void print_confusion(std::ostream& out, const CheckResult& result, bool all_cell
 }
 
 void print_segment_errors(std::ostream& out, const CheckResult& result) {
-  if (std::none_of(result.algorithms.begin(), result.algorithms.end(),
-                   [](const Algorithm* a) { return a->answers(Level::segment); }))
-    return;
-  std::size_t name_width = 9, family_width = 6;
-  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
-  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  if (!any_answers(result, Level::segment)) return;
+  const auto widths = column_widths(result);
+  const std::size_t name_width = widths.first, family_width = widths.second;
   out << "\nsegment error (Hausdorff distance to the exact intersection / pair's bounding-box diagonal)\n";
   auto row = [&](const std::string& algorithm, const std::string& family, const std::string& answered,
                  const std::string& measured, const std::string& median, const std::string& max,
@@ -110,10 +118,7 @@ void print_segment_errors(std::ostream& out, const CheckResult& result) {
       auto it = result.tallies.find({a->name, family});
       if (it == result.tallies.end()) continue;
       const SegmentTally& s = it->second.segment;
-      total.answered += s.answered;
-      total.kind_mismatches += s.kind_mismatches;
-      total.not_computed += s.not_computed;
-      total.errors.insert(total.errors.end(), s.errors.begin(), s.errors.end());
+      add_tally(total, s);
       row(a->name, family, std::to_string(s.answered), std::to_string(s.errors.size()),
           short_number(s.median_error()), short_number(s.max_error()), std::to_string(s.kind_mismatches),
           std::to_string(s.not_computed));
@@ -126,9 +131,8 @@ void print_segment_errors(std::ostream& out, const CheckResult& result) {
 }
 
 void print_check_table(std::ostream& out, const CheckResult& result) {
-  std::size_t name_width = 9, family_width = 6;
-  for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
-  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
+  const auto widths = column_widths(result);
+  const std::size_t name_width = widths.first, family_width = widths.second;
   auto row = [&](const std::string& algorithm, const std::string& family, const std::string& cases,
                  const std::string& fp, const std::string& fn, const std::string& rel,
                  const std::string& unsupported, const std::string& crash, const std::string& timeout) {
@@ -144,13 +148,7 @@ void print_check_table(std::ostream& out, const CheckResult& result) {
       auto it = result.tallies.find({a->name, family});
       if (it == result.tallies.end()) continue;
       const Tally& t = it->second;
-      total.cases += t.cases;
-      total.false_positives += t.false_positives;
-      total.false_negatives += t.false_negatives;
-      total.misclassified += t.misclassified;
-      total.unsupported += t.unsupported;
-      total.crashes += t.crashes;
-      total.timeouts += t.timeouts;
+      add_tally(total, t);
       row(a->name, family, std::to_string(t.cases), std::to_string(t.false_positives),
           std::to_string(t.false_negatives), a->answers(Level::relation) ? std::to_string(t.misclassified) : "-",
           std::to_string(t.unsupported), std::to_string(t.crashes), std::to_string(t.timeouts));
