@@ -32,10 +32,12 @@ struct WorkloadPools {
 
 class Workload {
  public:
+  // kind: "ratio"; usage: "ratio[:R]", for the lists of known workloads.
+  Workload(std::string kind, std::string usage) : kind_(std::move(kind)), usage_(std::move(usage)) {}
   virtual ~Workload() = default;
 
-  virtual std::string kind() const = 0;   // "ratio"
-  virtual std::string usage() const = 0;  // "ratio[:R]", for the lists of known workloads
+  const std::string& kind() const { return kind_; }
+  const std::string& usage() const { return usage_; }
 
   // The values the bare kind stands for, in the order their pools are built.
   virtual std::vector<std::string> default_values() const = 0;
@@ -54,7 +56,18 @@ class Workload {
   // Builds the pools of `values` (canonical and distinct). Only called on the workloads that
   // other workloads' pools_from() names, or that name themselves.
   virtual WorkloadPools build(const std::vector<std::string>& values, const WorkloadInput& input) const = 0;
+
+ private:
+  std::string kind_, usage_;
 };
+
+// The texts of a list of values, text(value) each: a default_values() from the values' own list.
+template <class List, class Text>
+std::vector<std::string> texts_of(const List& values, Text text) {
+  std::vector<std::string> out;
+  for (const auto& v : values) out.push_back(text(v));
+  return out;
+}
 
 // Every workload, in the order of the list in harness/bench/CMakeLists.txt.
 const std::vector<std::unique_ptr<Workload>>& workloads();

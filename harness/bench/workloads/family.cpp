@@ -11,8 +11,7 @@ namespace {
 
 class FamilyWorkload : public Workload {
  public:
-  std::string kind() const override { return "family"; }
-  std::string usage() const override { return "family[:F]"; }
+  FamilyWorkload() : Workload("family", "family[:F]") {}
   // Every family of the cases: known only once they are read or generated.
   std::vector<std::string> default_values() const override { return {"*"}; }
   std::string parse_value(const std::string& value) const override {

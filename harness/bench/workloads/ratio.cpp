@@ -34,13 +34,8 @@ double parse_ratio(const std::string& value) {
 
 class RatioWorkload : public Workload {
  public:
-  std::string kind() const override { return "ratio"; }
-  std::string usage() const override { return "ratio[:R]"; }
-  std::vector<std::string> default_values() const override {
-    std::vector<std::string> values;
-    for (double r : default_ratios()) values.push_back(ratio_text(r));
-    return values;
-  }
+  RatioWorkload() : Workload("ratio", "ratio[:R]") {}
+  std::vector<std::string> default_values() const override { return texts_of(default_ratios(), ratio_text); }
   std::string parse_value(const std::string& value) const override { return ratio_text(parse_ratio(value)); }
   WorkloadPools build(const std::vector<std::string>& values, const WorkloadInput& input) const override {
     std::vector<double> ratios;

@@ -57,8 +57,7 @@ Pool labelled(const std::string& workload, const std::string& value, std::uint64
 
 class SceneWorkload : public Workload {
  public:
-  std::string kind() const override { return "scene"; }
-  std::string usage() const override { return "scene[:NAME[/bv:TYPE]]"; }
+  SceneWorkload() : Workload("scene", "scene[:NAME[/bv:TYPE]]") {}
   std::vector<std::string> default_values() const override { return kDefault; }
   // Scenes read meshes and run FCL before anything is timed: only when asked for.
   bool in_default_set(const std::vector<const Algorithm*>&) const override { return false; }

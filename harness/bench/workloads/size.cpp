@@ -26,8 +26,7 @@ std::size_t parse_size(const std::string& value) {
 
 class SizeWorkload : public Workload {
  public:
-  std::string kind() const override { return "size"; }
-  std::string usage() const override { return "size[:N]"; }
+  SizeWorkload() : Workload("size", "size[:N]") {}
   std::vector<std::string> default_values() const override {
     return {"4096", "16384", "65536", "262144", "1048576"};
   }

@@ -12,8 +12,7 @@ namespace {
 
 class StageWorkload : public Workload {
  public:
-  std::string kind() const override { return "stage"; }
-  std::string usage() const override { return "stage"; }
+  StageWorkload() : Workload("stage", "stage") {}
   std::vector<std::string> default_values() const override { return {ratio_text(0.5)}; }
   std::string parse_value(const std::string& value) const override {
     throw std::invalid_argument("stage takes no value ('stage:" + value + "'): it times every registered stage");

@@ -92,13 +92,8 @@ Dimension parse_type(const std::string& value) {
 
 class TypeWorkload : public Workload {
  public:
-  std::string kind() const override { return "type"; }
-  std::string usage() const override { return "type[:T]"; }
-  std::vector<std::string> default_values() const override {
-    std::vector<std::string> values;
-    for (Dimension d : kTypes) values.push_back(type_text(d));
-    return values;
-  }
+  TypeWorkload() : Workload("type", "type[:T]") {}
+  std::vector<std::string> default_values() const override { return texts_of(kTypes, type_text); }
   std::string parse_value(const std::string& value) const override { return type_text(parse_type(value)); }
   WorkloadPools build(const std::vector<std::string>& values, const WorkloadInput& input) const override {
     WorkloadPools built;
