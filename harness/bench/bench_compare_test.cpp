@@ -11,10 +11,10 @@ namespace tritri {
 namespace {
 
 using testing_support::Outcome;
+using testing_support::plugin_library;
 using testing_support::run_tritri;
 using testing_support::scratch_file;
 
-std::string lib(const std::string& name) { return std::string(TRITRI_BINARY_DIR) + "/plugins/lib" + name + ".so"; }
 std::string out_file(const std::string& name) { return std::string(TRITRI_BINARY_DIR) + "/bench-compare-" + name; }
 
 nlohmann::json read_json(const std::string& path) {
@@ -30,7 +30,7 @@ bool has_benchmark(const nlohmann::json& doc, const std::string& name) {
 
 TEST(BenchPlugins, TheCExampleIsTimed) {
   const auto json = out_file("mine.json");
-  const Outcome r = run_tritri("bench --quick --plugin " + lib("tritri_example_mine") +
+  const Outcome r = run_tritri("bench --quick --plugin " + plugin_library("tritri_example_mine") +
                                " --algo mine --workload ratio:0.5 --json " + json);
   ASSERT_EQ(r.status, 0) << r.out;
   const auto doc = read_json(json);
@@ -45,7 +45,7 @@ TEST(BenchPlugins, ABrokenPluginIsReportedAndNotTimedAndTheOthersAre) {
       "fine-2 0 0 0 4 0 0 0 4 0  5 5 5 6 5 5 5 6 5  family=f\n"
       "hang 0 0 0 4 0 0 0 4 0  666 1 -1 1 1 1 2 2 1  family=f\n");
   const auto json = out_file("broken.json");
-  const Outcome r = run_tritri("bench --quick --plugin " + lib("tritri_broken") + " --algo broken,guigue03 --workload family --cases " +
+  const Outcome r = run_tritri("bench --quick --plugin " + plugin_library("tritri_broken") + " --algo broken,guigue03 --workload family --cases " +
                                cases + " --timeout 0.5 --json " + json);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("not timed: broken/overlap/family:f: 1 crash(es), 1 timeout(s)"), std::string::npos) << r.out;
@@ -84,7 +84,7 @@ TEST(BenchAndCompare, AnInjectedSlowdownIsSignificantAndAnUnchangedRerunIsNot) {
 #endif
   auto bench = [&](const std::string& plugin, const std::string& name) {
     const auto json = out_file(name);
-    const Outcome r = run_tritri("bench --plugin " + lib(plugin) + " --algo boxes --level overlap --workload ratio:0.5 --pool 16384 "
+    const Outcome r = run_tritri("bench --plugin " + plugin_library(plugin) + " --algo boxes --level overlap --workload ratio:0.5 --pool 16384 "
                                  "--repetitions 9 --min-time 0.05 --no-ops --json " + json);
     EXPECT_EQ(r.status, 0) << r.out;
     return json;

@@ -12,10 +12,10 @@ namespace tritri {
 namespace {
 
 using testing_support::Outcome;
+using testing_support::plugin_library;
 using testing_support::run_tritri;
 using testing_support::scratch_file;
 
-std::string lib(const std::string& name) { return std::string(TRITRI_BINARY_DIR) + "/plugins/lib" + name + ".so"; }
 
 // Disjoint boxes (both answers right), overlapping boxes of disjoint triangles (the box test's
 // false positive, recorded), and "seven": disjoint, with a coordinate 7 where tritri_boxes_changed
@@ -28,7 +28,7 @@ const std::string kCases =
 std::string record_baseline(const std::string& name) {
   const auto cases = scratch_file("gate.cases", kCases);
   const std::string baseline = std::string(TRITRI_BINARY_DIR) + "/scratch-" + name;
-  const Outcome r = run_tritri("check --quiet --plugin " + lib("tritri_boxes") + " --algo boxes --write-baseline " +
+  const Outcome r = run_tritri("check --quiet --plugin " + plugin_library("tritri_boxes") + " --algo boxes --write-baseline " +
                                baseline + " " + cases);
   EXPECT_EQ(r.status, 0) << r.out;
   return baseline;
@@ -40,7 +40,7 @@ TEST(Gate, AGzipBaselineIsCompressedAndMatchesTheSameAnswers) {
   ASSERT_EQ(in.get(), 0x1f) << "written as gzip";
   ASSERT_EQ(in.get(), 0x8b);
   const auto cases = scratch_file("gate.cases", kCases);
-  const Outcome r = run_tritri("check --quiet --plugin " + lib("tritri_boxes") + " --algo boxes --baseline " +
+  const Outcome r = run_tritri("check --quiet --plugin " + plugin_library("tritri_boxes") + " --algo boxes --baseline " +
                                baseline + " " + cases);
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("boxes: new: 0, fixed: 0"), std::string::npos) << r.out;
@@ -49,7 +49,7 @@ TEST(Gate, AGzipBaselineIsCompressedAndMatchesTheSameAnswers) {
 TEST(Gate, AChangedAnswerFailsTheGateNamingTheCase) {
   const auto baseline = record_baseline("gate-changed.tsv.gz");
   const auto cases = scratch_file("gate.cases", kCases);
-  const Outcome r = run_tritri("check --quiet --plugin " + lib("tritri_boxes_changed") + " --algo boxes --baseline " +
+  const Outcome r = run_tritri("check --quiet --plugin " + plugin_library("tritri_boxes_changed") + " --algo boxes --baseline " +
                                baseline + " " + cases);
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("boxes: new: 1, fixed: 0"), std::string::npos) << r.out;
@@ -67,7 +67,7 @@ TEST(Gate, ADamagedBaselineIsAnErrorNamingTheFile) {
   ASSERT_GT(bytes.size(), 20u);
   const auto damaged = scratch_file("gate-truncated.tsv.gz", bytes.substr(0, bytes.size() / 2));
   const auto cases = scratch_file("gate.cases", kCases);
-  const Outcome r = run_tritri("check --quiet --plugin " + lib("tritri_boxes") + " --algo boxes --baseline " +
+  const Outcome r = run_tritri("check --quiet --plugin " + plugin_library("tritri_boxes") + " --algo boxes --baseline " +
                                damaged + " " + cases);
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_NE(r.out.find("gate-truncated.tsv.gz"), std::string::npos) << r.out;

@@ -11,12 +11,12 @@ namespace tritri {
 namespace {
 
 using testing_support::Outcome;
+using testing_support::plugin_library;
 using testing_support::run_tritri;
 using testing_support::scratch_file;
 
 const std::string kSource = TRITRI_SOURCE_DIR;
 const std::string kBuiltin = kSource + "/cases/builtin.cases";
-std::string lib(const std::string& name) { return std::string(TRITRI_BINARY_DIR) + "/plugins/lib" + name + ".so"; }
 
 // A table row of `tritri check`: the words of the line that starts with algorithm and family.
 std::vector<std::string_view> row(const std::string& out, const std::string& algorithm, const std::string& family) {
@@ -48,7 +48,7 @@ const std::string kHostile =
 
 TEST(BrokenPlugin, CheckContainsItsCrashesAndHangsAndKeepsEverythingElse) {
   const auto cases = scratch_file("hostile.cases", kHostile);
-  const Outcome r = run_tritri("check --plugin " + lib("tritri_broken") + " --algo broken,moller97 --timeout 0.5 " + cases);
+  const Outcome r = run_tritri("check --plugin " + plugin_library("tritri_broken") + " --algo broken,moller97 --timeout 0.5 " + cases);
   ASSERT_EQ(r.status, 0) << r.out;
   // columns: algorithm family cases FP FN relation unsupported crash timeout
   const auto broken = row(r.out, "broken", "f");
@@ -69,12 +69,12 @@ TEST(BrokenPlugin, CheckContainsItsCrashesAndHangsAndKeepsEverythingElse) {
 
 TEST(BrokenPlugin, AnswerAndShowSayWhatHappened) {
   const auto cases = scratch_file("hostile.cases", kHostile);
-  Outcome r = run_tritri("answer --plugin " + lib("tritri_broken") + " --algo broken --timeout 0.5 " + cases);
+  Outcome r = run_tritri("answer --plugin " + plugin_library("tritri_broken") + " --algo broken --timeout 0.5 " + cases);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("segv\tcrash\tcrash\tcrash\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("hang\ttimeout\t"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("fine-2\t0\t-\t-\n"), std::string::npos) << r.out;
-  r = run_tritri("show segv " + cases + " --plugin " + lib("tritri_broken") + " --algo broken,moller97");
+  r = run_tritri("show segv " + cases + " --plugin " + plugin_library("tritri_broken") + " --algo broken,moller97");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("crash (SIGSEGV)"), std::string::npos) << r.out;
 }
@@ -82,14 +82,14 @@ TEST(BrokenPlugin, AnswerAndShowSayWhatHappened) {
 TEST(BrokenPlugin, ANewCrashFailsTheBaseline) {
   const auto cases = scratch_file("hostile.cases", kHostile);
   const auto baseline = scratch_file("empty-baseline.tsv", "algorithm\tcase\tlevel\tanswer\toracle\n");
-  const Outcome r = run_tritri("check --quiet --plugin " + lib("tritri_broken") + " --algo broken --timeout 0.5 --baseline " +
+  const Outcome r = run_tritri("check --quiet --plugin " + plugin_library("tritri_broken") + " --algo broken --timeout 0.5 --baseline " +
                                baseline + " " + cases);
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("broken\tsegv\toverlap\tanswered crash"), std::string::npos) << r.out;
 }
 
 TEST(ExamplePlugins, TheCExampleIsRightOnTheBuiltinCases) {
-  expect_right_on_builtin("--plugin " + lib("tritri_example_mine"), "mine");
+  expect_right_on_builtin("--plugin " + plugin_library("tritri_example_mine"), "mine");
 }
 
 TEST(ExamplePlugins, ThePythonExampleIsRightOnTheBuiltinCases) {

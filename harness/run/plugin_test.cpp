@@ -1,13 +1,14 @@
 // Shared-library plug-ins load as algorithms, and the loader refuses what it cannot trust.
 #include "harness/run/isolation.hpp"
 #include "harness/run/plugin.hpp"
+#include "harness/testing/tritri_runner.hpp"
 
 #include <gtest/gtest.h>
 
 namespace tritri {
 namespace {
 
-std::string plugin(const std::string& name) { return std::string(TRITRI_BINARY_DIR) + "/plugins/lib" + name + ".so"; }
+using testing_support::plugin_library;
 
 std::string load_error(const std::string& path) {
   try {
@@ -19,7 +20,7 @@ std::string load_error(const std::string& path) {
 }
 
 TEST(Plugin, LoadsAsAnAlgorithmWithWhatItDeclares) {
-  const Algorithm& a = load_plugin(plugin("tritri_broken"));
+  const Algorithm& a = load_plugin(plugin_library("tritri_broken"));
   EXPECT_EQ(a.name, "broken");
   EXPECT_EQ(registry().find("broken"), &a);
   EXPECT_TRUE(a.answers(Level::overlap));
@@ -35,12 +36,12 @@ TEST(Plugin, LoadsAsAnAlgorithmWithWhatItDeclares) {
   EXPECT_EQ(out[0], Overlap::yes);
   EXPECT_EQ(out[1], Overlap::no);
   // loading the same name twice is refused
-  EXPECT_NE(load_error(plugin("tritri_broken")).find("already taken"), std::string::npos);
+  EXPECT_NE(load_error(plugin_library("tritri_broken")).find("already taken"), std::string::npos);
 }
 
 TEST(Plugin, ItsCrashesAndHangsAreContainedByIsolation) {
   const Algorithm* a = registry().find("broken");
-  if (!a) a = &load_plugin(plugin("tritri_broken"));
+  if (!a) a = &load_plugin(plugin_library("tritri_broken"));
   const Triangle t{{Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0)}};
   auto with = [&](double x) { return TrianglePair{t, Triangle{{Vec3<double>(x, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0)}}}; };
   std::vector<TrianglePair> pairs;
@@ -65,9 +66,9 @@ TEST(Plugin, ItsCrashesAndHangsAreContainedByIsolation) {
 
 TEST(Plugin, RefusesWhatItCannotTrust) {
   EXPECT_NE(load_error("/nonexistent/libx.so").find("/nonexistent/libx.so"), std::string::npos);
-  EXPECT_NE(load_error(plugin("tritri_broken_noentry")).find("does not export tritri_plugin_entry"), std::string::npos);
-  EXPECT_NE(load_error(plugin("tritri_broken_abi")).find("plug-in ABI 42"), std::string::npos);
-  EXPECT_NE(load_error(plugin("tritri_broken_nolevels")).find("answers no level"), std::string::npos);
+  EXPECT_NE(load_error(plugin_library("tritri_broken_noentry")).find("does not export tritri_plugin_entry"), std::string::npos);
+  EXPECT_NE(load_error(plugin_library("tritri_broken_abi")).find("plug-in ABI 42"), std::string::npos);
+  EXPECT_NE(load_error(plugin_library("tritri_broken_nolevels")).find("answers no level"), std::string::npos);
 }
 
 }  // namespace

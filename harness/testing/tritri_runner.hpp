@@ -27,6 +27,11 @@ inline Outcome run_tritri(const std::string& arguments) {
   return run;
 }
 
+// The path of the test plug-in NAME built into the build tree (libNAME.so).
+inline std::string plugin_library(const std::string& name) {
+  return std::string(TRITRI_BINARY_DIR) + "/plugins/lib" + name + ".so";
+}
+
 // Writes `text` to a file under the build tree and returns its path. Written beside and renamed
 // into place, because ctest runs tests in parallel and several may write the same fixture.
 inline std::string scratch_file(const std::string& name, const std::string& text) {
