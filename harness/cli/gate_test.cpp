@@ -11,10 +11,7 @@
 namespace tritri {
 namespace {
 
-using testing_support::Outcome;
-using testing_support::plugin_library;
-using testing_support::run_tritri;
-using testing_support::scratch_file;
+using namespace testing_support;  // run_tritri, plugin_library, scratch_file, Outcome
 
 
 // Disjoint boxes (both answers right), overlapping boxes of disjoint triangles (the box test's

@@ -10,10 +10,7 @@
 namespace tritri {
 namespace {
 
-using testing_support::Outcome;
-using testing_support::plugin_library;
-using testing_support::run_tritri;
-using testing_support::scratch_file;
+using namespace testing_support;  // run_tritri, plugin_library, scratch_file, Outcome
 
 const std::string kSource = TRITRI_SOURCE_DIR;
 const std::string kBuiltin = kSource + "/cases/builtin.cases";
