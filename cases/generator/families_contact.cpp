@@ -305,52 +305,47 @@ Construction edge_on_face_outside(Rng& rng) {
   return {pair_of(t, p, q, off_plane(rng))};
 }
 
+const FamilyConfig kContactConfigs[] = {
+    {"shared-vertex", {"away", R::touch_point, shared_vertex_away}},
+    {"shared-vertex", {"cross", R::cross, shared_vertex_cross}},
+    {"shared-vertex", {"through-outside", R::touch_point, shared_vertex_through_outside}},
+    {"shared-vertex", {"coplanar-point", R::coplanar_point, shared_vertex_coplanar_point}},
+    {"shared-vertex", {"coplanar-overlap", R::coplanar_overlap, shared_vertex_coplanar_overlap}},
+    {"vertex-on-edge", {"above", R::touch_point, vertex_on_edge_above}},
+    {"vertex-on-edge", {"cross", R::cross, vertex_on_edge_cross}},
+    {"vertex-on-edge", {"outward", R::touch_point, vertex_on_edge_outward}},
+    {"vertex-on-edge", {"along", R::touch_segment, vertex_on_edge_along}},
+    {"vertex-on-edge", {"coplanar-point", R::coplanar_point, vertex_on_edge_coplanar_point}},
+    {"vertex-on-edge", {"coplanar-overlap", R::coplanar_overlap, vertex_on_edge_coplanar_overlap}},
+    {"vertex-on-face", {"touch", R::touch_point, vertex_on_face_touch}},
+    {"vertex-on-face", {"pierce", R::cross, vertex_on_face_pierce}},
+    {"vertex-on-face", {"straddle", R::cross, vertex_on_face_straddle}},
+    {"shared-edge", {"hinge", R::touch_segment, shared_edge_hinge}},
+    {"shared-edge", {"coplanar-opposite", R::coplanar_segment, shared_edge_coplanar_opposite}},
+    {"shared-edge", {"coplanar-folded", R::coplanar_overlap, shared_edge_coplanar_folded}},
+    {"collinear-edges", {"overlap-skew", R::touch_segment, collinear<Span::overlap, Third::skew>}},
+    {"collinear-edges", {"contain-skew", R::touch_segment, collinear<Span::contain, Third::skew>}},
+    {"collinear-edges", {"endpoint-skew", R::touch_point, collinear<Span::endpoint, Third::skew>}},
+    {"collinear-edges", {"gap-skew", R::disjoint, collinear<Span::gap, Third::skew>}},
+    {"collinear-edges", {"overlap-coplanar", R::coplanar_segment, collinear<Span::overlap, Third::opposite>}},
+    {"collinear-edges", {"contain-coplanar", R::coplanar_segment, collinear<Span::contain, Third::opposite>}},
+    {"collinear-edges", {"endpoint-coplanar", R::coplanar_point, collinear<Span::endpoint, Third::opposite>}},
+    {"collinear-edges", {"gap-coplanar", R::coplanar_disjoint, collinear<Span::gap, Third::opposite>}},
+    {"collinear-edges", {"overlap-folded", R::coplanar_overlap, collinear<Span::overlap, Third::same>}},
+    {"collinear-edges", {"contain-folded", R::coplanar_overlap, collinear<Span::contain, Third::same>}},
+    {"edge-crossing", {"touch", R::touch_point, edge_crossing_touch}},
+    {"edge-crossing", {"through", R::cross, edge_crossing_through}},
+    {"edge-crossing", {"at-vertex", R::touch_point, edge_crossing_at_vertex}},
+    {"edge-crossing", {"beyond", R::disjoint, edge_crossing_beyond}},
+    {"edge-on-face", {"inside", R::touch_segment, edge_on_face_inside}},
+    {"edge-on-face", {"exiting", R::touch_segment, edge_on_face_exiting}},
+    {"edge-on-face", {"spanning", R::touch_segment, edge_on_face_spanning}},
+    {"edge-on-face", {"piercing", R::cross, edge_on_face_piercing}},
+    {"edge-on-face", {"outside", R::disjoint, edge_on_face_outside}},
+};
+
 }  // namespace
 
-void add_contact_families(std::vector<Family>& out) {
-  out.push_back({"shared-vertex", "one common vertex",
-                 {{"away", R::touch_point, shared_vertex_away},
-                  {"cross", R::cross, shared_vertex_cross},
-                  {"through-outside", R::touch_point, shared_vertex_through_outside},
-                  {"coplanar-point", R::coplanar_point, shared_vertex_coplanar_point},
-                  {"coplanar-overlap", R::coplanar_overlap, shared_vertex_coplanar_overlap}}});
-  out.push_back({"vertex-on-edge", "a vertex of T2 strictly inside an edge of T1",
-                 {{"above", R::touch_point, vertex_on_edge_above},
-                  {"cross", R::cross, vertex_on_edge_cross},
-                  {"outward", R::touch_point, vertex_on_edge_outward},
-                  {"along", R::touch_segment, vertex_on_edge_along},
-                  {"coplanar-point", R::coplanar_point, vertex_on_edge_coplanar_point},
-                  {"coplanar-overlap", R::coplanar_overlap, vertex_on_edge_coplanar_overlap}}});
-  out.push_back({"vertex-on-face", "a vertex of T2 strictly inside T1",
-                 {{"touch", R::touch_point, vertex_on_face_touch},
-                  {"pierce", R::cross, vertex_on_face_pierce},
-                  {"straddle", R::cross, vertex_on_face_straddle}}});
-  out.push_back({"shared-edge", "a common edge",
-                 {{"hinge", R::touch_segment, shared_edge_hinge},
-                  {"coplanar-opposite", R::coplanar_segment, shared_edge_coplanar_opposite},
-                  {"coplanar-folded", R::coplanar_overlap, shared_edge_coplanar_folded}}});
-  out.push_back({"collinear-edges", "an edge of each on one line",
-                 {{"overlap-skew", R::touch_segment, collinear<Span::overlap, Third::skew>},
-                  {"contain-skew", R::touch_segment, collinear<Span::contain, Third::skew>},
-                  {"endpoint-skew", R::touch_point, collinear<Span::endpoint, Third::skew>},
-                  {"gap-skew", R::disjoint, collinear<Span::gap, Third::skew>},
-                  {"overlap-coplanar", R::coplanar_segment, collinear<Span::overlap, Third::opposite>},
-                  {"contain-coplanar", R::coplanar_segment, collinear<Span::contain, Third::opposite>},
-                  {"endpoint-coplanar", R::coplanar_point, collinear<Span::endpoint, Third::opposite>},
-                  {"gap-coplanar", R::coplanar_disjoint, collinear<Span::gap, Third::opposite>},
-                  {"overlap-folded", R::coplanar_overlap, collinear<Span::overlap, Third::same>},
-                  {"contain-folded", R::coplanar_overlap, collinear<Span::contain, Third::same>}}});
-  out.push_back({"edge-crossing", "an edge of each crossing at one point, planes not parallel",
-                 {{"touch", R::touch_point, edge_crossing_touch},
-                  {"through", R::cross, edge_crossing_through},
-                  {"at-vertex", R::touch_point, edge_crossing_at_vertex},
-                  {"beyond", R::disjoint, edge_crossing_beyond}}});
-  out.push_back({"edge-on-face", "an edge of T2 in T1's plane",
-                 {{"inside", R::touch_segment, edge_on_face_inside},
-                  {"exiting", R::touch_segment, edge_on_face_exiting},
-                  {"spanning", R::touch_segment, edge_on_face_spanning},
-                  {"piercing", R::cross, edge_on_face_piercing},
-                  {"outside", R::disjoint, edge_on_face_outside}}});
-}
+std::span<const FamilyConfig> contact_configs() { return kContactConfigs; }
 
 }  // namespace tritri::corpus

@@ -1,12 +1,23 @@
-// The family tables, split by theme; families.cpp puts them in corpus order.
+// The families' configs, split by theme over three construction files; families.cpp describes
+// the families and gathers their configs.
 #pragma once
 
 #include "cases/generator/construction.hpp"
 
+#include <span>
+
 namespace tritri::corpus {
 
-void add_contact_families(std::vector<Family>& out);  // 1-7
-void add_plane_families(std::vector<Family>& out);    // 8-11
-void add_stress_families(std::vector<Family>& out);   // 12-16
+// One config of the family named `family`. Each construction file has a table of them, a row a
+// config, in the order of its family's configs; families.cpp gathers them under the families'
+// descriptions.
+struct FamilyConfig {
+  const char* family;
+  Config config;
+};
+
+std::span<const FamilyConfig> contact_configs();  // families 1-7
+std::span<const FamilyConfig> plane_configs();    // 8-11
+std::span<const FamilyConfig> stress_configs();   // 12-16
 
 }  // namespace tritri::corpus

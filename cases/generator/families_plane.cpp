@@ -198,33 +198,31 @@ Construction parallel_ulp(Rng& rng) {
   return out;
 }
 
+const FamilyConfig kPlaneConfigs[] = {
+    {"coplanar-containment", {"strict", R::coplanar_overlap, containment_strict}},
+    {"coplanar-containment", {"vertex", R::coplanar_overlap, containment_vertex}},
+    {"coplanar-containment", {"edge-points", R::coplanar_overlap, containment_edge_points}},
+    {"coplanar-containment", {"whole-edge", R::coplanar_overlap, containment_whole_edge}},
+    {"coplanar-containment", {"two-edges", R::coplanar_overlap, containment_two_edges}},
+    {"coplanar-containment", {"identical", R::coplanar_overlap, containment_identical}},
+    {"coplanar-overlap", {"star", R::coplanar_overlap, overlap_star}},
+    {"coplanar-overlap", {"star-shifted", R::coplanar_overlap, overlap_star_shifted}},
+    {"coplanar-overlap", {"vertex-inside", R::coplanar_overlap, overlap_vertex_inside}},
+    {"coplanar-overlap", {"two-inside", R::coplanar_overlap, overlap_two_inside}},
+    {"coplanar-overlap", {"around-vertex", R::coplanar_overlap, overlap_around_vertex}},
+    {"coplanar-overlap", {"random", R::coplanar_overlap, overlap_random}},
+    {"coplanar-disjoint", {"gap-vertex", R::coplanar_disjoint, disjoint_gap<false>}},
+    {"coplanar-disjoint", {"gap-edge", R::coplanar_disjoint, disjoint_gap<true>}},
+    {"coplanar-disjoint", {"ulp-vertex", R::coplanar_disjoint, disjoint_ulp<false>}},
+    {"coplanar-disjoint", {"ulp-edge", R::coplanar_disjoint, disjoint_ulp<true>}},
+    {"parallel", {"stacked", R::parallel, parallel_stacked}},
+    {"parallel", {"shifted", R::parallel, parallel_shifted}},
+    {"parallel", {"other", R::parallel, parallel_other}},
+    {"parallel", {"ulp", R::parallel, parallel_ulp}},
+};
+
 }  // namespace
 
-void add_plane_families(std::vector<Family>& out) {
-  out.push_back({"coplanar-containment", "T2 inside T1 in one plane, touching its boundary or not",
-                 {{"strict", R::coplanar_overlap, containment_strict},
-                  {"vertex", R::coplanar_overlap, containment_vertex},
-                  {"edge-points", R::coplanar_overlap, containment_edge_points},
-                  {"whole-edge", R::coplanar_overlap, containment_whole_edge},
-                  {"two-edges", R::coplanar_overlap, containment_two_edges},
-                  {"identical", R::coplanar_overlap, containment_identical}}});
-  out.push_back({"coplanar-overlap", "coplanar overlaps whose intersection has 3 to 6 corners",
-                 {{"star", R::coplanar_overlap, overlap_star},
-                  {"star-shifted", R::coplanar_overlap, overlap_star_shifted},
-                  {"vertex-inside", R::coplanar_overlap, overlap_vertex_inside},
-                  {"two-inside", R::coplanar_overlap, overlap_two_inside},
-                  {"around-vertex", R::coplanar_overlap, overlap_around_vertex},
-                  {"random", R::coplanar_overlap, overlap_random}}});
-  out.push_back({"coplanar-disjoint", "one plane, apart by gaps from 8 down to one ulp",
-                 {{"gap-vertex", R::coplanar_disjoint, disjoint_gap<false>},
-                  {"gap-edge", R::coplanar_disjoint, disjoint_gap<true>},
-                  {"ulp-vertex", R::coplanar_disjoint, disjoint_ulp<false>},
-                  {"ulp-edge", R::coplanar_disjoint, disjoint_ulp<true>}}});
-  out.push_back({"parallel", "distinct parallel planes, offsets from 8 down to one ulp",
-                 {{"stacked", R::parallel, parallel_stacked},
-                  {"shifted", R::parallel, parallel_shifted},
-                  {"other", R::parallel, parallel_other},
-                  {"ulp", R::parallel, parallel_ulp}}});
-}
+std::span<const FamilyConfig> plane_configs() { return kPlaneConfigs; }
 
 }  // namespace tritri::corpus

@@ -275,37 +275,31 @@ Construction random_pair(Rng& rng) {
   return out;
 }
 
+const FamilyConfig kStressConfigs[] = {
+    {"near-coplanar", {"through", R::cross, near_coplanar_through}},
+    {"near-coplanar", {"axis-outside", R::disjoint, near_coplanar_axis_outside}},
+    {"near-coplanar", {"apart", R::disjoint, near_coplanar_apart}},
+    {"near-coplanar", {"hinge", R::touch_segment, near_coplanar_hinge}},
+    {"axis-aligned", {"wall-cross", R::cross, axis_wall_cross}},
+    {"axis-aligned", {"wall-touch", R::touch_point, axis_wall_touch}},
+    {"axis-aligned", {"wall-edge", R::touch_segment, axis_wall_edge}},
+    {"axis-aligned", {"wall-random", std::nullopt, axis_wall_random}},
+    {"axis-aligned", {"perpendicular", std::nullopt, axis_perpendicular}},
+    {"slivers", {"pierce", R::cross, sliver_pierce}},
+    {"slivers", {"touch", R::touch_point, sliver_touch}},
+    {"slivers", {"graze", R::disjoint, sliver_graze}},
+    {"slivers", {"in-plane", R::coplanar_overlap, sliver_in_plane}},
+    {"slivers", {"along-edge", R::touch_segment, sliver_along_edge}},
+    {"tiny-vs-huge", {"touch", R::touch_point, tiny_touch}},
+    {"tiny-vs-huge", {"cross", R::cross, tiny_cross}},
+    {"tiny-vs-huge", {"miss", R::disjoint, tiny_miss}},
+    {"tiny-vs-huge", {"edge-touch", R::touch_point, tiny_edge_touch}},
+    {"tiny-vs-huge", {"coplanar-miss", R::coplanar_disjoint, tiny_coplanar_miss}},
+    {"random", {"cube", std::nullopt, random_pair}},
+};
+
 }  // namespace
 
-void add_stress_families(std::vector<Family>& out) {
-  out.push_back({"near-coplanar", "T2 tilted off T1's plane by slopes 2^-3 to 2^-50",
-                 {{"through", R::cross, near_coplanar_through},
-                  {"axis-outside", R::disjoint, near_coplanar_axis_outside},
-                  {"apart", R::disjoint, near_coplanar_apart},
-                  {"hinge", R::touch_segment, near_coplanar_hinge}}});
-  out.push_back({"axis-aligned", "T1 in a plane x, y or z = c; T2 crossing, touching or random",
-                 {{"wall-cross", R::cross, axis_wall_cross},
-                  {"wall-touch", R::touch_point, axis_wall_touch},
-                  {"wall-edge", R::touch_segment, axis_wall_edge},
-                  {"wall-random", std::nullopt, axis_wall_random},
-                  {"perpendicular", std::nullopt, axis_perpendicular}},
-                 {R::disjoint}});
-  out.push_back({"slivers", "needles and caps with aspect ratios up to 1e8",
-                 {{"pierce", R::cross, sliver_pierce},
-                  {"touch", R::touch_point, sliver_touch},
-                  {"graze", R::disjoint, sliver_graze},
-                  {"in-plane", R::coplanar_overlap, sliver_in_plane},
-                  {"along-edge", R::touch_segment, sliver_along_edge}}});
-  out.push_back({"tiny-vs-huge", "T2 smaller than T1 by 2^-10 to 2^-40",
-                 {{"touch", R::touch_point, tiny_touch},
-                  {"cross", R::cross, tiny_cross},
-                  {"miss", R::disjoint, tiny_miss},
-                  {"edge-touch", R::touch_point, tiny_edge_touch},
-                  {"coplanar-miss", R::coplanar_disjoint, tiny_coplanar_miss}}});
-  out.push_back({"random", "vertices uniform in the unit cube",
-                 {{"cube", std::nullopt, random_pair}},
-                 {R::disjoint, R::cross},
-                 false});
-}
+std::span<const FamilyConfig> stress_configs() { return kStressConfigs; }
 
 }  // namespace tritri::corpus
