@@ -166,10 +166,19 @@ TEST(Bounds, SemiStaticDet3BoundHoldsOnNearlyFlatPairs) {
   EXPECT_GT(worst, 0.0);
 }
 
+// One bound under test: every |error| is within it, and the largest |error| / bound seen.
+struct WorstRatio {
+  double ratio = 0.0;
+  void check(const Q& err, double bound) {
+    EXPECT_LE(cmp(err, Q(bound)), 0);
+    ratio = std::max(ratio, to_d(err) / bound);
+  }
+};
+
 // The per-call semi-static bound and the dynamic (permanent) bound of Filtered.
 TEST(Bounds, PerCallAndDynamicDet3BoundsHold) {
   GenRng r(2);
-  double worst_static = 0.0, worst_dynamic = 0.0;
+  WorstRatio semi_static, dynamic;
   for (int trial = 0; trial < 4000; ++trial) {
     const int scale = static_cast<int>(r.integer(-320, 320));
     const TrianglePair p = near_flat(r, scale, scale + static_cast<int>(r.integer(-10, 40)));
@@ -182,17 +191,15 @@ TEST(Bounds, PerCallAndDynamicDet3BoundsHold) {
     if (std::max(v.x, std::max(v.y, v.z)) > ex::bound::kMax3) continue;
     const double bs = ex::bound::kRel3 * v.x * v.y * v.z + ex::bound::kAbs3;
     const double bd = ex::bound::kPerm3 * v.perm + ex::bound::kAbs3;
-    ASSERT_LE(cmp(err, Q(bs)), 0);
-    ASSERT_LE(cmp(err, Q(bd)), 0);
-    worst_static = std::max(worst_static, to_d(err) / bs);
-    worst_dynamic = std::max(worst_dynamic, to_d(err) / bd);
+    semi_static.check(err, bs);
+    dynamic.check(err, bd);
   }
-  std::printf("    worst |error| / bound: per-call semi-static %.3g, dynamic %.3g\n", worst_static, worst_dynamic);
+  std::printf("    worst |error| / bound: per-call semi-static %.3g, dynamic %.3g\n", semi_static.ratio, dynamic.ratio);
 }
 
 TEST(Bounds, Det2BoundsHold) {
   GenRng r(3);
-  double worst = 0.0, worst_dyn = 0.0;
+  WorstRatio semi_static, dynamic;
   for (int trial = 0; trial < 20000; ++trial) {
     const int scale = static_cast<int>(r.integer(-480, 480));
     const V o = cube(r, 1) * std::ldexp(1.0, scale + static_cast<int>(r.integer(-4, 40)));
@@ -216,13 +223,11 @@ TEST(Bounds, Det2BoundsHold) {
     const double be = ex::det2_bound(hi_i - lo_i, hi_j - lo_j);
     const double q1 = (b[i] - a[i]) * (c[j] - a[j]), q2 = (b[j] - a[j]) * (c[i] - a[i]);
     const double bd = ex::bound::kPerm2 * (std::fabs(q1) + std::fabs(q2)) + ex::bound::kAbs2;
-    ASSERT_LE(cmp(err, Q(bs)), 0);
     ASSERT_LE(cmp(err, Q(be)), 0);
-    ASSERT_LE(cmp(err, Q(bd)), 0);
-    worst = std::max(worst, to_d(err) / bs);
-    worst_dyn = std::max(worst_dyn, to_d(err) / bd);
+    semi_static.check(err, bs);
+    dynamic.check(err, bd);
   }
-  std::printf("    worst |error| / bound: semi-static %.3g, dynamic %.3g\n", worst, worst_dyn);
+  std::printf("    worst |error| / bound: semi-static %.3g, dynamic %.3g\n", semi_static.ratio, dynamic.ratio);
 }
 
 // Underflow: coordinates down to subnormals. The relative bound alone would fail here; the
@@ -530,16 +535,31 @@ std::vector<TrianglePair> all_orders(const TrianglePair& p) {
 
 bool same(const RelationAnswer& a, const OracleRecord& o) { return a.relation == o.relation && a.dimension == o.dimension; }
 
+// One instruction set's batch answers (the scalar path's for Isa::scalar) on a list of pairs.
+struct IsaAnswers {
+  ex::Isa isa;
+  std::vector<Overlap> overlap;
+  std::vector<RelationAnswer> relation;
+};
+
+// The overlap and relation batch answers of every instruction set the machine supports.
+std::vector<IsaAnswers> answers_on_every_isa(const std::vector<TrianglePair>& pairs) {
+  std::vector<IsaAnswers> out;
+  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+    if (!ex::supported(isa)) continue;
+    IsaAnswers a{isa, std::vector<Overlap>(pairs.size()), std::vector<RelationAnswer>(pairs.size())};
+    ex::overlap_batch_with(isa, pairs.data(), pairs.size(), a.overlap.data());
+    ex::relation_batch_with(isa, pairs.data(), pairs.size(), a.relation.data());
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 // Every ISA and the scalar path, overlap and relation, against the oracle.
 void expect_all_paths_agree(const std::vector<TrianglePair>& pairs, const std::string& what) {
   std::vector<OracleRecord> truth;
   for (const auto& p : pairs) truth.push_back(oracle_label(p));
-  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
-    if (!ex::supported(isa)) continue;
-    std::vector<Overlap> ov(pairs.size());
-    std::vector<RelationAnswer> rel(pairs.size());
-    ex::overlap_batch_with(isa, pairs.data(), pairs.size(), ov.data());
-    ex::relation_batch_with(isa, pairs.data(), pairs.size(), rel.data());
+  for (const auto& [isa, ov, rel] : answers_on_every_isa(pairs)) {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       ASSERT_EQ(ov[i] == Overlap::yes, truth[i].overlap) << what << " #" << i << " " << ex::to_string(isa);
       ASSERT_NE(ov[i], Overlap::unsupported);
@@ -599,12 +619,7 @@ TEST(Classify, NonFiniteInputIsDeclined) {
   std::vector<TrianglePair> many(37, TrianglePair{kFloor, tri({1, 1, -1}, {1, 1, 1}, {2, -3, 0})});
   many[5].t1[0][0] = INFINITY;
   many[33].t2[2][1] = -INFINITY;
-  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
-    if (!ex::supported(isa)) continue;
-    std::vector<Overlap> out(many.size());
-    std::vector<RelationAnswer> rel(many.size());
-    ex::overlap_batch_with(isa, many.data(), many.size(), out.data());
-    ex::relation_batch_with(isa, many.data(), many.size(), rel.data());
+  for (const auto& [isa, out, rel] : answers_on_every_isa(many)) {
     for (std::size_t i = 0; i < many.size(); ++i) {
       const bool bad = i == 5 || i == 33;
       EXPECT_EQ(out[i], bad ? Overlap::unsupported : Overlap::yes) << i;
