@@ -34,6 +34,9 @@ inline constexpr std::uint32_t kGridFlag = 0x80000000u;
 
 #if EXACTSIMD_X86
 
+// A piece of kernel.inc's block functions, split out for reading: always inlined into them.
+#define EXACTSIMD_PIECE [[gnu::always_inline]] inline
+
 // What the wrappers spell alike but for the intrinsics' prefix P (_mm, _mm256, _mm512) or
 // comparison intrinsic: written once here, expanded inside each wrapper.
 // The lane count W, the vector type D, the mask type M, broadcast and lane-wise arithmetic.
@@ -199,6 +202,7 @@ struct I {
 #pragma GCC pop_options
 #endif
 
+#undef EXACTSIMD_PIECE
 #undef EXACTSIMD_LANES
 #undef EXACTSIMD_VECTOR_MASKS
 #undef EXACTSIMD_PREDICATE_COMPARISONS
