@@ -76,18 +76,25 @@ void process_entries(const Algorithm* a, const Pool& pool, const std::vector<Lev
 }
 
 void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, const std::vector<Level>& levels,
-                   const Options& options, Entries& entries) {
+                   const Options& options, CheckCache& checks, Entries& entries) {
   for (Level level : levels) {
     if (!a->answers(level)) continue;
     auto e = new_entry(a, std::string(to_string(level)), pool);
     e->answer_level = level;
     e->floor = lineup.is_floor(a);
+    if (const CachedCheck* done = checks.find(e->name())) {
+      e->score = done->score;
+      e->ops = done->ops;
+      entries.timed.push_back(std::move(e));
+      continue;
+    }
     e->score = score_entry(*a, level, pool, options.isolation, e->faults);
     if (!e->faults.empty()) {
       entries.untimed.push_back(std::move(e));
       continue;
     }
     if (options.count_operations) e->ops = count_operations(*a, level, pool);
+    checks.put(e->name(), {e->score, e->ops});
     entries.timed.push_back(std::move(e));
   }
 }
@@ -149,7 +156,7 @@ bool Lineup::is_floor(const Algorithm* a) const { return std::find(floors.begin(
 std::string Lineup::reference_row() const { return reference->name + "/" + std::string(to_string(reference_level)); }
 
 Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup, const std::vector<Level>& levels,
-                     const Options& options) {
+                     const Options& options, CheckCache& checks) {
   Entries entries;
   // Each algorithm runs over each pool in a child process first: minutes on the default pools.
   // Always shown (quiet_below 0): the step is long even though it counts few items.
@@ -163,7 +170,7 @@ Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup
         if (planned.levels) process_entries(a, planned.pool, levels, entries);
         continue;
       }
-      if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, entries);
+      if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, checks, entries);
       if (planned.stages) stage_entries(a, planned.pool, entries);
     }
   }
