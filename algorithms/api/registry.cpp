@@ -28,6 +28,7 @@ std::optional<Algorithm> Algorithm::on_scalar(Scalar s) const {
   copy.table_ = {};
   for (Level l : kLevels) copy.table_[index(l)][index(Scalar::double_)] = table_[index(l)][index(s)];
   copy.stages.clear();
+  copy.counters = {};
   return copy;
 }
 

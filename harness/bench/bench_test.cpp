@@ -22,6 +22,7 @@
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace tritri::bench {
 namespace {
@@ -356,6 +357,48 @@ TEST(BenchRun, StageHooksAreTimedAndWritten) {
   EXPECT_TRUE(names.count("stagetest/stage:mirror/ratio:0.50")) << out.str();
   EXPECT_TRUE(names.count("stagetest/stage:read/ratio:0.50"));
   EXPECT_FALSE(names.count("stagetest/overlap/ratio:0.50"));  // the stage pool is for the stages only
+  std::filesystem::remove(path);
+}
+
+// A test with path counters gets them recorded per pool, from one pass over exactly that pool.
+std::uint64_t g_pairs_seen = 0, g_resets = 0;
+void count_reset() {
+  g_pairs_seen = 0;
+  ++g_resets;
+}
+CounterList count_read() { return {{"pairs", g_pairs_seen}, {"resets", g_resets}}; }
+void counting_overlap(const TrianglePair* pairs, std::size_t n, Overlap* out) {
+  g_pairs_seen += n;
+  overlap_batch<&moller97::overlap<double, true>>(pairs, n, out);
+}
+
+TEST(BenchRun, PathCountersAreRecordedPerPoolFromOnePass) {
+  Algorithm a;
+  a.name = "countertest";
+  a.set_batch<Level::overlap>(Scalar::double_, &counting_overlap);
+  a.counters = {&count_reset, &count_read};
+  Options o = quick_options();
+  o.algorithms = {&a};
+  o.workloads = {"ratio:0.5", "type:point"};
+  o.pool_size = 300;
+  o.repetitions = 1;
+  o.min_time = 0.001;
+  o.count_operations = false;
+  o.isolation.enabled = false;
+  const auto path = std::filesystem::temp_directory_path() / ("tritri-bench-counters-" + std::to_string(getpid()) + ".json");
+  o.json_path = path.string();
+  std::ostringstream out;
+  ASSERT_EQ(run(o, out), 0) << out.str();
+  const auto doc = nlohmann::json::parse(std::ifstream(path));
+  std::size_t seen = 0;
+  for (const auto& r : doc["tritri"]["results"]) {
+    if (r["algorithm"] != "countertest") continue;
+    ASSERT_TRUE(r.contains("path_counters")) << r["name"];
+    EXPECT_EQ(r["path_counters"]["pairs"], r["pool_size"]) << r["name"];
+    ++seen;
+  }
+  EXPECT_EQ(seen, 2u);
+  EXPECT_EQ(g_resets, 2u);
   std::filesystem::remove(path);
 }
 

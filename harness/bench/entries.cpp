@@ -75,6 +75,25 @@ void process_entries(const Algorithm* a, const Pool& pool, const std::vector<Lev
   }
 }
 
+// One untimed pass of the level over the pool on this thread, between a reset and a read of
+// the algorithm's path counters (after its check: the pass cannot crash the run).
+template <class Answer, class Batch>
+CounterList run_counters(const PathCounters& counters, Batch batch, const Pool& pool) {
+  std::vector<Answer> out(pool.size());
+  counters.reset();
+  batch(pool.pairs.data(), pool.size(), out.data());
+  return counters.read();
+}
+
+CounterList path_counters(const Algorithm& a, Level level, const Pool& pool) {
+  CounterList list;
+  for_each_level([&](auto l) {
+    constexpr Level L = decltype(l)::value;
+    if (L == level) list = run_counters<AnswerOf<L>>(a.counters, a.batch<L>(), pool);
+  });
+  return list;
+}
+
 void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, const std::vector<Level>& levels,
                    const Options& options, CheckCache& checks, Entries& entries) {
   for (Level level : levels) {
@@ -85,6 +104,7 @@ void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, c
     if (const CachedCheck* done = checks.find(e->name())) {
       e->score = done->score;
       e->ops = done->ops;
+      if (a->counters) e->counters = path_counters(*a, level, pool);
       entries.timed.push_back(std::move(e));
       continue;
     }
@@ -94,6 +114,7 @@ void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, c
       continue;
     }
     if (options.count_operations) e->ops = count_operations(*a, level, pool);
+    if (a->counters) e->counters = path_counters(*a, level, pool);
     checks.put(e->name(), {e->score, e->ops});
     entries.timed.push_back(std::move(e));
   }

@@ -27,6 +27,7 @@ struct Entry {
   std::vector<Fault> faults;    // pairs it crashed or hung on when checked: then it is not timed
   std::string not_timed;        // why it is checked but not timed, when it is not for a fault
   std::optional<OpCounts> ops;  // totals over the pool
+  CounterList counters;         // the algorithm's path counters over one pass (PathCounters)
   std::vector<double> ns_per_pair;  // one per repetition (CPU time)
 
   std::string row() const { return algo + "/" + level; }

@@ -38,6 +38,11 @@ json result_json(const Entry& e, const Summary& summary) {
     if (const double r = summary.relative(e); std::isfinite(r)) s["relative_to_reference"] = r;
     if (std::isfinite(spread(e.ns_per_pair))) s["spread"] = spread(e.ns_per_pair);
   }
+  if (!e.counters.empty()) {
+    json counters;
+    for (const auto& [name, count] : e.counters) counters[name] = count;
+    s["path_counters"] = counters;
+  }
   if (e.ops) {
     const double n = static_cast<double>(e.pool->size());
     s["ops_per_pair"] = {{"add", e.ops->add / n}, {"mul", e.ops->mul / n}, {"div", e.ops->div / n},
