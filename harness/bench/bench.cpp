@@ -36,7 +36,8 @@ Lineup lineup_of(const Options& options, const Algorithm& reference) {
   Lineup l;
   l.algorithms = options.algorithms;
   if (l.algorithms.empty())
-    for (const auto& a : registry().all()) l.algorithms.push_back(&a);
+    for (const auto& a : registry().all())
+      if (a.build.empty()) l.algorithms.push_back(&a);
   l.floors = {&harness_floor()};
   if (const Algorithm* null = registry().find("null")) l.floors.push_back(null);
   for (const Algorithm* f : l.floors) std::erase(l.algorithms, f);

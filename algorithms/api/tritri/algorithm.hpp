@@ -152,6 +152,10 @@ struct Algorithm {
   PathCounters counters;
 
   std::string folder;  // filled in by the registry: the algorithm's folder under algorithms/
+  // "" for the project's build; the build variant's name ("v3fma") for an entry of a second build
+  // of the same code (algorithms/api/build_variants.hpp). Variants double a run's time, so they
+  // run when named (--algo NAME@v3fma), not by default.
+  std::string build;
 
   // The batch entry point of level L on scalar S; nullptr when it has none.
   template <Level L>
