@@ -296,7 +296,7 @@ Options tiny_run(const std::filesystem::path& json) {
 }
 
 TEST(BenchReference, TimesAreRelativeToTheNamedAlgorithmUnderOneKey) {
-  const auto path = std::filesystem::temp_directory_path() / "tritri-bench-reference-test.json";
+  const auto path = std::filesystem::temp_directory_path() / ("tritri-bench-reference-test-" + std::to_string(getpid()) + ".json");
   Options o = tiny_run(path);
   o.reference = "guigue03";
   std::ostringstream out;
@@ -346,7 +346,7 @@ TEST(BenchRun, StageHooksAreTimedAndWritten) {
   o.repetitions = 2;
   o.min_time = 0.001;
   o.count_operations = false;
-  const auto path = std::filesystem::temp_directory_path() / "tritri-bench-stage-test.json";
+  const auto path = std::filesystem::temp_directory_path() / ("tritri-bench-stage-test-" + std::to_string(getpid()) + ".json");
   o.json_path = path.string();
   std::ostringstream out;
   ASSERT_EQ(run(o, out), 0) << out.str();
@@ -403,7 +403,7 @@ TEST(BenchRun, PathCountersAreRecordedPerPoolFromOnePass) {
 }
 
 TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
-  const auto dir = std::filesystem::temp_directory_path() / "tritri-bench-cli-test";
+  const auto dir = std::filesystem::temp_directory_path() / ("tritri-bench-cli-test-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const auto json = dir / "quick.json", log = dir / "quick.log";
   const std::string command = std::string(TRITRI_BINARY_DIR) + "/bin/tritri bench --quick --json '" + json.string() +

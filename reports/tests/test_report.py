@@ -239,6 +239,25 @@ class ReportFromFixture(unittest.TestCase):
                 self.assertEqual(cell, markdown.pct(wrong / judged), name)
 
     # ---- part 5 ----
+    def test_exact_table_gives_each_pools_fallback_shares_and_both_paths(self):
+        results = load("bench.json")["tritri"]["results"]
+        header, rows = tables_in(self.text, "3.3 The exact test: where its time goes")[0]
+        self.assertEqual(header[:3], ["pool", "exact ns", "exact-scalar ns"])
+        exact = {e["workload"]: e for e in results if e["algorithm"] == "exact" and e["level"] == "overlap"}
+        scalar = {e["workload"]: e for e in results if e["algorithm"] == "exact-scalar" and e["level"] == "overlap"}
+        self.assertEqual(sorted(r[0] for r in rows), sorted(exact))
+        self.assertTrue(any(r[0].startswith("family:") for r in rows))
+        for r in rows:
+            e, c = exact[r[0]], exact[r[0]]["path_counters"]
+            self.assertEqual(r[1], markdown.ns(e["ns_per_pair_median"]), r[0])
+            self.assertEqual(r[2], markdown.ns(scalar[r[0]]["ns_per_pair_median"]), r[0])
+            self.assertEqual(r[header.index("undecided by SIMD")], markdown.pct(c["undecided_by_simd"] / c["pairs"]), r[0])
+            self.assertEqual(r[header.index("to scalar path")], markdown.pct(c["to_scalar"] / c["pairs"]), r[0])
+            self.assertIn("isa:" + r[-1], c)
+            # the scalar path alone sends every pair to the scalar classification
+            sc = scalar[r[0]]["path_counters"]
+            self.assertEqual(sc["to_scalar"], sc["pairs"], r[0])
+
     def test_compiler_answer_tables_match_the_diff(self):
         diff = load("compiler-diff.json")
         tables = tables_in(self.text, "5 What the compiler changes")

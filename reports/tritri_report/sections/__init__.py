@@ -10,8 +10,8 @@ A section is a module with
 The report writes each heading, then calls render.
 """
 
-from . import (asymmetry, authors, baseline, compiler, correctness, float_double, gallery, header, moller97, papers,
-               provenance, sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06,
+from . import (asymmetry, authors, baseline, compiler, correctness, exact_test, float_double, gallery, header,
+               moller97, papers, provenance, sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06,
                unquoted, yuhe13)
 
 SECTIONS = [
@@ -23,6 +23,7 @@ SECTIONS = [
     baseline,
     speed_error,
     time_ratio,
+    exact_test,
     stability,
     float_double,
     compiler,
