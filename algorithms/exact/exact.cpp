@@ -14,6 +14,18 @@ void relation_scalar_batch(const TrianglePair* pairs, std::size_t n, RelationAns
   exactsimd::relation_batch_with(exactsimd::Isa::scalar, pairs, n, out);
 }
 
+// The bench records, per pool, how far each pair got: the share the SIMD filter could not decide
+// is the cost of exactness (README.md, "Measurements").
+// The instruction set the batches ran on is named by a counter "isa:NAME" of 1.
+template <bool kSimd>
+CounterList path_counts() {
+  const exactsimd::Stats& s = exactsimd::stats();
+  const exactsimd::Isa isa = kSimd ? exactsimd::active_isa() : exactsimd::Isa::scalar;
+  return {{"pairs", s.pairs}, {"undecided_by_simd", s.pending}, {"to_scalar", s.scalar},
+          {"grid", s.grid},   {"filtered", s.filtered},         {"declined", s.declined},
+          {std::string("isa:") + exactsimd::to_string(isa), 1}};
+}
+
 }  // namespace
 
 void register_exact(Registry& registry) {
@@ -27,11 +39,13 @@ void register_exact(Registry& registry) {
       "a grid pass, then an exact scalar classification (integer engine)");
   simd.set_batch<Level::overlap>(Scalar::double_, &exactsimd::overlap_batch);
   simd.set_batch<Level::relation>(Scalar::double_, &exactsimd::relation_batch);
+  simd.counters = {&exactsimd::reset_stats, &path_counts<true>};
   registry.add(std::move(simd));
   Algorithm scalar = variant(paper, "exact-scalar",
       "the same answers from the scalar path alone: every pair through the filtered exact classification");
   scalar.set_batch<Level::overlap>(Scalar::double_, &overlap_scalar_batch);
   scalar.set_batch<Level::relation>(Scalar::double_, &relation_scalar_batch);
+  scalar.counters = {&exactsimd::reset_stats, &path_counts<false>};
   registry.add(std::move(scalar));
 }
 

@@ -381,10 +381,8 @@ SegmentAnswer segment(const PairT<T>& pair) {
     case SegmentOutcome::coplanar_meet: out.kind = SegmentKind::coplanar; return out;
     case SegmentOutcome::segment: break;
   }
-  out.p = Vec3<double>(static_cast<double>(source[0]), static_cast<double>(source[1]),
-                       static_cast<double>(source[2]));
-  out.q = Vec3<double>(static_cast<double>(target[0]), static_cast<double>(target[1]),
-                       static_cast<double>(target[2]));
+  out.p = Vec3<double>(static_cast<double>(source[0]), static_cast<double>(source[1]), static_cast<double>(source[2]));
+  out.q = Vec3<double>(static_cast<double>(target[0]), static_cast<double>(target[1]), static_cast<double>(target[2]));
   out.kind = out.p == out.q ? SegmentKind::point : SegmentKind::segment;
   return out;
 }
@@ -393,7 +391,10 @@ SegmentAnswer segment(const PairT<T>& pair) {
 // overlap test's step 4, so the two booleans can differ where a determinant rounds to 0).
 template <class T, class Predicates = FloatPredicates<T>>
 bool overlap_with_segment(const PairT<T>& pair) {
-  return segment<T, Predicates>(pair).kind != SegmentKind::empty;
+  T n1[3], n2[3], source[3], target[3];  // the segment is constructed, as published, not returned
+  const detail::SegmentLast<T, Predicates> last{n1, n2, source, target};
+  const auto o = detail::canonical<T, Predicates>(pair, n1, n2, last);
+  return o == detail::SegmentOutcome::segment || o == detail::SegmentOutcome::coplanar_meet;
 }
 
 }  // namespace tritri::guigue03

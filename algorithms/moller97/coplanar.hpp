@@ -79,4 +79,13 @@ inline bool coplanar_tri_tri(const T* n, const T* v0, const T* v1, const T* v2, 
   return strictly_inside(i0, i1, v0, u0, u1, u2) || strictly_inside(i0, i1, u0, v0, v1, v2);
 }
 
+// The same, given the normal by value and kept out of line, for a caller whose state must stay
+// in registers (moller97's Planes::coplanar, shen03's coplanar exit).
+template <class T>
+[[gnu::noinline]] bool coplanar_tri_tri_out_of_line(T nx, T ny, T nz, const T* v0, const T* v1, const T* v2,
+                                                    const T* u0, const T* u1, const T* u2) {
+  const T n[3] = {nx, ny, nz};
+  return coplanar_tri_tri(n, v0, v1, v2, u0, u1, u2);
+}
+
 }  // namespace tritri::moller97::detail

@@ -148,7 +148,10 @@ bool overlap(const PairT<T>& pair) {
   const Plane<T> pv = plane_through(v0, v1, v2);
   const T du0 = height(pv, u0), du1 = height(pv, u1), du2 = height(pv, u2);
   if (one_side(du0, du1, du2)) return false;
-  const auto coplanar = [&] { return moller97::detail::coplanar_tri_tri(pu.n, v0, v1, v2, u0, u1, u2); };
+  // pu.n by value: given its address, the compiler would keep pu in memory from step 1 on
+  const auto coplanar = [&] {
+    return moller97::detail::coplanar_tri_tri_out_of_line(pu.n[0], pu.n[1], pu.n[2], v0, v1, v2, u0, u1, u2);
+  };
   // step 3
   if (dv0 == T(0) && dv1 == T(0) && dv2 == T(0)) return coplanar();
   // step 4

@@ -1,4 +1,4 @@
-// Tropp–Tal–Shimshoni 2006: the scaled cut segment, the 2-D step and its edge-pair codes, the
+// Tropp–Tal–Shimshoni 2006: its three edge cases, the 2-D step and its edge-pair codes, the
 // built-in general cases, the defects of the published routine, and its operation counts.
 // Against the oracle, the conformance suite holds the published routine to random pairs in
 // general position (its x–y step is blind to planes through the z axis, which random pairs never
@@ -23,6 +23,28 @@ const Triangle kWall = tri({0, 0, 0}, {4, 0, 0}, {0, 0, 4});  // the plane y = 0
 bool same_segment(std::pair<Vec3<double>, Vec3<double>> s, Vec3<double> a, Vec3<double> b) {
   return ((s.first - a).norm() < 1e-12 && (s.second - b).norm() < 1e-12) ||
          ((s.first - b).norm() < 1e-12 && (s.second - a).norm() < 1e-12);
+}
+
+// The published routine never builds the 3-D cut: it goes from B's edge coefficients straight
+// to the 2-D step. Each of its three edge cases (B's edges Q1 and Q2 crossing A's plane, Q1 and
+// Q3, Q2 and Q3) is reached by putting D1, D1 + Q1 or D1 + Q2 alone below the floor; the cut
+// from (2,1,0) to (1,2,0) lies inside A, and the routine reports overlap.
+TEST(Tropp06Pieces, EachPairOfCrossedEdgesReachesTheTwoDimensionalStep) {
+  EXPECT_NE(intersect<double>({kFloor, tri({1, 1, -1}, {3, 1, 1}, {1, 3, 1})}), kDisjoint);
+  EXPECT_NE(intersect<double>({kFloor, tri({3, 1, 1}, {1, 1, -1}, {1, 3, 1})}), kDisjoint);
+  EXPECT_NE(intersect<double>({kFloor, tri({3, 1, 1}, {1, 3, 1}, {1, 1, -1})}), kDisjoint);
+  // the same cuts moved beyond A (x, y ≥ 6): the 2-D step rejects them
+  EXPECT_EQ(intersect<double>({kFloor, tri({7, 6, -1}, {9, 6, 1}, {7, 8, 1})}), kDisjoint);
+  EXPECT_EQ(intersect<double>({kFloor, tri({9, 6, 1}, {7, 6, -1}, {7, 8, 1})}), kDisjoint);
+  EXPECT_EQ(intersect<double>({kFloor, tri({9, 6, 1}, {7, 8, 1}, {7, 6, -1})}), kDisjoint);
+}
+
+TEST(Tropp06Pieces, ParallelCoplanarAndRejectedPlanes) {
+  auto code = [](const Triangle& a, const Triangle& b) { return intersect<double>({a, b}); };
+  EXPECT_EQ(code(kFloor, tri({0, 0, 1}, {4, 0, 1}, {0, 4, 1})), kDisjoint);  // parallel
+  EXPECT_EQ(code(kFloor, tri({1, 1, 0}, {5, 1, 0}, {1, 5, 0})), kCoplanar);  // Möller's test
+  EXPECT_EQ(code(kFloor, tri({9, 9, 0}, {12, 9, 0}, {9, 12, 0})), kDisjoint); // coplanar, apart
+  EXPECT_EQ(code(kFloor, tri({0, 0, 2}, {4, 0, 3}, {0, 4, 5})), kDisjoint);  // all above
 }
 
 TEST(Tropp06Pieces, EdgePairCodesName2DCrossings) {

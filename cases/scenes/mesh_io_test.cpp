@@ -49,7 +49,7 @@ const char* kTet = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 
 }  // namespace
 
 int main(int argc, char** argv) {
-  dir = fs::temp_directory_path() / "scenes_mesh_io_test";
+  dir = fs::temp_directory_path() / ("scenes_mesh_io_test-" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::string data = argc > 1 ? argv[1] : "";
   if (data.empty()) try {

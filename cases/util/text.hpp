@@ -1,11 +1,22 @@
-// The one tokenizer of tritri: case files, the process-plug-in protocol and baseline files.
+// Text helpers: the one tokenizer of tritri (case files, the process-plug-in protocol, baseline
+// files) and the one way hashes are written.
 #pragma once
 
 #include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace tritri {
+
+// A 64-bit hash as 16 lower-case hex digits, the way hashes appear in names and JSON.
+inline std::string hex64(std::uint64_t x) {
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(x));
+  return buf;
+}
 
 // Fields of `text` split at `separator`, empty fields kept: "a\t\tb" is {"a", "", "b"}.
 inline std::vector<std::string_view> split_fields(std::string_view text, char separator) {

@@ -5,6 +5,7 @@
 #include "harness/bench/report.hpp"
 #include "harness/bench/timing.hpp"
 #include "harness/bench/workload.hpp"
+#include "harness/bench/workloads/family.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -35,7 +36,8 @@ Lineup lineup_of(const Options& options, const Algorithm& reference) {
   Lineup l;
   l.algorithms = options.algorithms;
   if (l.algorithms.empty())
-    for (const auto& a : registry().all()) l.algorithms.push_back(&a);
+    for (const auto& a : registry().all())
+      if (a.build.empty()) l.algorithms.push_back(&a);
   l.floors = {&harness_floor()};
   if (const Algorithm* null = registry().find("null")) l.floors.push_back(null);
   for (const Algorithm* f : l.floors) std::erase(l.algorithms, f);
@@ -51,6 +53,13 @@ std::string corpus_hash_of(const std::vector<PlannedPool>& pools) {
   std::vector<const Pool*> list;
   for (const auto& p : pools) list.push_back(&p.pool);
   return hex64(hash_pools(list));
+}
+
+// The cases the family pools come from, as the JSON records them (and tritri check does).
+CorpusIdentity family_corpus(const Options& options, const WorkloadInput& input) {
+  CorpusIdentity corpus = options.family_corpus;
+  if (corpus.files.empty()) corpus.generated_by = generator_source(input);
+  return corpus;
 }
 
 }  // namespace
@@ -76,11 +85,13 @@ int run(const Options& options, std::ostream& out) {
   out << "tritri bench: building pools of " << options.pool_size << " pairs (seed " << options.seed
       << ") and labelling them with the oracle...\n";
   out.flush();
-  WorkloadInput input{{options.pool_size, options.seed}, options.quick, options.family_cases, options.family_source};
+  WorkloadInput input{{options.pool_size, options.seed}, options.quick, options.family_corpus, options.read_family_cases};
   const Planned planned = build_pools_cached(selected, input, options.cache, out);
 
   // ---- the entries: checked and counted before anything is timed ----
-  const Entries entries = make_entries(planned.pools, lineup, levels, options);
+  CheckCache checks(options.cache, planned.cache_key, options, out);
+  const Entries entries = make_entries(planned.pools, lineup, levels, options, checks);
+  checks.save(out);
   report_untimed(entries.untimed, out);
 
   // ---- Google Benchmark ----
@@ -104,7 +115,7 @@ int run(const Options& options, std::ostream& out) {
   print_tables(entries.timed, summary, options.repetitions, out);
   print_harness(summary, out);
   if (!options.json_path.empty()) {
-    write_json(options.json_path, timing.json, entries, planned.pools, summary);
+    write_json(options.json_path, timing.json, entries, planned.pools, summary, family_corpus(options, input));
     out << "\nwrote " << options.json_path << '\n';
   }
   return timing.errors ? 1 : 0;

@@ -17,10 +17,12 @@
 #include "harness/bench/pool_cache.hpp"
 #include "harness/bench/pools.hpp"
 #include "cases/casefile.hpp"
+#include "cases/corpus_identity.hpp"
 #include "harness/run/isolation.hpp"
 #include "tritri/algorithm.hpp"
 #include "tritri/counting.hpp"
 
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -48,10 +50,12 @@ struct Options {
   bool interleave = true;        // random interleaving of the repetitions
   std::string filter;            // Google Benchmark regex on the names; empty: all
   std::string json_path;         // empty: no file
-  // The cases of the family: workloads; empty: the corpus generator's (cases/generator), the
-  // CI corpus when `quick`.
-  std::vector<Case> family_cases;
-  std::string family_source;       // where they came from, for the context
+  // The case files of the family: workloads (their identity; the JSON records it) and how to
+  // read them, called only when a pool is built from them (a cached pool needs only the
+  // identity). No files: the corpus generator's cases (cases/generator), the CI corpus when
+  // `quick`.
+  CorpusIdentity family_corpus;
+  std::function<std::vector<Case>()> read_family_cases;
   bool quick = false;
   bool count_operations = true;
   // Each algorithm is first run on each pool in a child process: one that crashes or hangs there

@@ -75,19 +75,47 @@ void process_entries(const Algorithm* a, const Pool& pool, const std::vector<Lev
   }
 }
 
+// One untimed pass of the level over the pool on this thread, between a reset and a read of
+// the algorithm's path counters (after its check: the pass cannot crash the run).
+template <class Answer, class Batch>
+CounterList run_counters(const PathCounters& counters, Batch batch, const Pool& pool) {
+  std::vector<Answer> out(pool.size());
+  counters.reset();
+  batch(pool.pairs.data(), pool.size(), out.data());
+  return counters.read();
+}
+
+CounterList path_counters(const Algorithm& a, Level level, const Pool& pool) {
+  CounterList list;
+  for_each_level([&](auto l) {
+    constexpr Level L = decltype(l)::value;
+    if (L == level) list = run_counters<AnswerOf<L>>(a.counters, a.batch<L>(), pool);
+  });
+  return list;
+}
+
 void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, const std::vector<Level>& levels,
-                   const Options& options, Entries& entries) {
+                   const Options& options, CheckCache& checks, Entries& entries) {
   for (Level level : levels) {
     if (!a->answers(level)) continue;
     auto e = new_entry(a, std::string(to_string(level)), pool);
     e->answer_level = level;
     e->floor = lineup.is_floor(a);
+    if (const CachedCheck* done = checks.find(e->name())) {
+      e->score = done->score;
+      e->ops = done->ops;
+      if (a->counters) e->counters = path_counters(*a, level, pool);
+      entries.timed.push_back(std::move(e));
+      continue;
+    }
     e->score = score_entry(*a, level, pool, options.isolation, e->faults);
     if (!e->faults.empty()) {
       entries.untimed.push_back(std::move(e));
       continue;
     }
     if (options.count_operations) e->ops = count_operations(*a, level, pool);
+    if (a->counters) e->counters = path_counters(*a, level, pool);
+    checks.put(e->name(), {e->score, e->ops});
     entries.timed.push_back(std::move(e));
   }
 }
@@ -149,7 +177,7 @@ bool Lineup::is_floor(const Algorithm* a) const { return std::find(floors.begin(
 std::string Lineup::reference_row() const { return reference->name + "/" + std::string(to_string(reference_level)); }
 
 Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup, const std::vector<Level>& levels,
-                     const Options& options) {
+                     const Options& options, CheckCache& checks) {
   Entries entries;
   // Each algorithm runs over each pool in a child process first: minutes on the default pools.
   // Always shown (quiet_below 0): the step is long even though it counts few items.
@@ -163,7 +191,7 @@ Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup
         if (planned.levels) process_entries(a, planned.pool, levels, entries);
         continue;
       }
-      if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, entries);
+      if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, checks, entries);
       if (planned.stages) stage_entries(a, planned.pool, entries);
     }
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "harness/bench/bench.hpp"
+#include "harness/bench/check_cache.hpp"
 #include "harness/bench/workload.hpp"
 
 #include <iosfwd>
@@ -26,6 +27,7 @@ struct Entry {
   std::vector<Fault> faults;    // pairs it crashed or hung on when checked: then it is not timed
   std::string not_timed;        // why it is checked but not timed, when it is not for a fault
   std::optional<OpCounts> ops;  // totals over the pool
+  CounterList counters;         // the algorithm's path counters over one pass (PathCounters)
   std::vector<double> ns_per_pair;  // one per repetition (CPU time)
 
   std::string row() const { return algo + "/" + level; }
@@ -51,9 +53,10 @@ struct Entries {
 };
 
 // Checks every algorithm on every pool (each in a child process unless isolation is off) and
-// counts the operations of its counting instantiation, per what the pool is planned for.
+// counts the operations of its counting instantiation, per what the pool is planned for; a check
+// that `checks` holds is taken from it, a new clean one is added to it.
 Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup, const std::vector<Level>& levels,
-                     const Options& options);
+                     const Options& options, CheckCache& checks);
 
 // "not timed: ..." lines, with the first pair that crashed or hung, paste-ready.
 void report_untimed(const EntryList& untimed, std::ostream& out);

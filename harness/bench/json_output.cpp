@@ -2,6 +2,7 @@
 
 #include "cases/util/atomic_file.hpp"
 #include "cases/util/stats.hpp"
+#include "harness/check/check_output.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +37,11 @@ json result_json(const Entry& e, const Summary& summary) {
     s["ns_per_pair_median"] = median(e.ns_per_pair);
     if (const double r = summary.relative(e); std::isfinite(r)) s["relative_to_reference"] = r;
     if (std::isfinite(spread(e.ns_per_pair))) s["spread"] = spread(e.ns_per_pair);
+  }
+  if (!e.counters.empty()) {
+    json counters;
+    for (const auto& [name, count] : e.counters) counters[name] = count;
+    s["path_counters"] = counters;
   }
   if (e.ops) {
     const double n = static_cast<double>(e.pool->size());
@@ -76,7 +82,7 @@ json harness_json(const Summary& summary) {
 }  // namespace
 
 void write_json(const std::string& path, const std::string& google_json, const Entries& entries,
-                const std::vector<PlannedPool>& pools, const Summary& summary) {
+                const std::vector<PlannedPool>& pools, const Summary& summary, const CorpusIdentity& corpus) {
   std::string text = nan_to_null(google_json);
   json doc = json::parse(text, nullptr, false);
   if (!doc.is_discarded()) {
@@ -86,7 +92,8 @@ void write_json(const std::string& path, const std::string& google_json, const E
     for (const auto& e : entries.untimed) untimed.push_back(untimed_json(*e));
     doc["tritri"] = {{"reference", summary.reference}, {"reference_level", summary.reference_row.substr(summary.reference.size() + 1)},
                      {"not_timed", untimed},           {"pools", pool_list},
-                     {"results", results},             {"harness", harness_json(summary)}};
+                     {"results", results},             {"harness", harness_json(summary)},
+                     {"corpus", corpus_json(corpus)}};
     text = doc.dump(2);
   } else {
     std::cerr << "tritri bench: warning: could not parse Google Benchmark's JSON; writing it unchanged\n";

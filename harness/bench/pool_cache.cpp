@@ -1,6 +1,7 @@
 #include "harness/bench/pool_cache.hpp"
 
 #include "cases/util/atomic_file.hpp"
+#include "harness/bench/workloads/family.hpp"
 
 #include <CGAL/version.h>
 
@@ -41,17 +42,7 @@ std::vector<TrianglePair> pairs_of(const std::vector<double>& xs) {
   return out;
 }
 
-constexpr char kMagic[] = "tritri-pool-cache/1\n";
-
-std::uint64_t cases_hash(const std::vector<Case>& cases) {
-  std::uint64_t h = kFnvOffset;
-  for (const Case& c : cases) {
-    h = fnv1a(c.name, h);
-    h = fnv1a(&c.pair, sizeof c.pair, h);
-    for (const auto& [k, v] : c.labels) h = fnv1a(v, fnv1a(k, h));
-  }
-  return h;
-}
+constexpr char kMagic[] = "tritri-pool-cache/2\n";
 
 // ---- a flat byte encoding: lengths as 64-bit words, in this machine's byte order (the cache
 // is this machine's) ----
@@ -63,7 +54,7 @@ void put_bytes(std::string& out, const void* data, std::size_t size) {
 void put_string(std::string& out, const std::string& s) { put_bytes(out, s.data(), s.size()); }
 
 struct Reader {
-  const std::string& data;
+  std::string_view data;
   std::size_t at = 0;
   std::uint64_t u64() {
     if (data.size() - at < 8) throw std::runtime_error("truncated");
@@ -109,7 +100,7 @@ std::string encode(const Planned& planned) {
   return out;
 }
 
-Planned decode(const std::string& payload) {
+Planned decode(std::string_view payload) {
   Reader r{payload};
   Planned planned;
   const std::uint64_t pools = r.u64();
@@ -138,25 +129,27 @@ Planned decode(const std::string& payload) {
 // The entry: magic, key, payload, checksum of everything before it. Throws with the reason the
 // entry cannot be used.
 Planned read_entry(const std::string& path, const std::string& key) {
-  std::ifstream in(path, std::ios::binary);
+  // One read of the whole entry: hundreds of megabytes with the default family pools.
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw std::runtime_error("no entry");
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string data(static_cast<std::size_t>(in.tellg()), '\0');
+  in.seekg(0);
+  if (!in.read(data.data(), static_cast<std::streamsize>(data.size()))) throw std::runtime_error("truncated");
   const std::size_t magic = sizeof kMagic - 1;
   if (data.size() < magic + 8 || data.compare(0, magic, kMagic) != 0) throw std::runtime_error("not a pool cache entry");
   std::uint64_t stored;
   std::memcpy(&stored, data.data() + data.size() - 8, 8);
-  if (fnv1a(data.data(), data.size() - 8) != stored) throw std::runtime_error("checksum mismatch (corrupt)");
-  const std::string body = data.substr(magic, data.size() - magic - 8);
-  Reader r{body};
+  if (hash_bytes(data.data(), data.size() - 8) != stored) throw std::runtime_error("checksum mismatch (corrupt)");
+  Reader r{std::string_view(data).substr(magic, data.size() - magic - 8)};
   if (r.bytes() != key) throw std::runtime_error("stale (made for other settings)");
-  return decode(std::string(r.bytes()));
+  return decode(r.bytes());
 }
 
 void write_entry(const std::string& path, const std::string& key, const Planned& planned) {
   std::string data = kMagic;
   put_string(data, key);
   put_string(data, encode(planned));
-  put_u64(data, fnv1a(data.data(), data.size()));
+  put_u64(data, hash_bytes(data.data(), data.size()));
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   write_file_atomically(path, [&](std::ostream& out) { out.write(data.data(), static_cast<std::streamsize>(data.size())); });
 }
@@ -173,7 +166,7 @@ std::string pool_cache_key(const std::vector<Selected>& selected, const Workload
   std::string key = "generator " + std::to_string(kPoolGeneratorVersion) + "\noracle CGAL " CGAL_VERSION_STR "\n";
   key += "seed " + std::to_string(input.pool.seed) + "\nsize " + std::to_string(input.pool.size) + "\nquick " +
          std::to_string(input.quick) + "\n";
-  key += "family cases " + std::to_string(input.cases.size()) + " " + hex64(cases_hash(input.cases)) + "\n";
+  key += "family cases " + (input.corpus.files.empty() ? generator_source(input) : "files " + input.corpus.hash) + "\n";
   for (const Selected& s : selected) {
     key += "workload " + s.workload->kind() + " from " + s.workload->pools_from() +
            (s.workload->times_stages() ? " stages" : " levels") + ":";
@@ -191,12 +184,14 @@ Planned build_pools_cached(const std::vector<Selected>& selected, const Workload
   const std::string path = directory + "/pools-" + hex64(fnv1a(key)) + ".bin";
   try {
     Planned planned = read_entry(path, key);
+    planned.cache_key = key;
     log << "pools: read from the cache, " << path << " (--no-cache to rebuild)\n";
     return planned;
   } catch (const std::exception& e) {
     if (std::string(e.what()) != "no entry") log << "pools: cache entry " << path << " not used: " << e.what() << "; rebuilding\n";
   }
   Planned planned = build_pools(selected, input);
+  planned.cache_key = key;
   try {
     write_entry(path, key, planned);
     log << "pools: kept in the cache, " << path << '\n';

@@ -4,8 +4,8 @@
 // bench's set-up).
 //
 // An entry is keyed by everything its pools depend on: the workloads and values asked for, the
-// seed, the pool size, --quick, the cases the family workload draws from (a hash of their names,
-// coordinates and labels), kPoolGeneratorVersion and the oracle (CGAL's version). The key's full
+// seed, the pool size, --quick, the cases the family workload draws from (the content hashes of
+// their files, cases/corpus_identity.hpp), kPoolGeneratorVersion and the oracle (CGAL's version). The key's full
 // text is stored in the entry and compared on load, and the payload carries a checksum: an entry
 // that is stale, truncated or corrupt is rebuilt, with a message, and never trusted. Entries are
 // written atomically (cases/util/atomic_file.hpp), so an interrupted run leaves none half-written.

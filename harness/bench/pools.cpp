@@ -98,10 +98,4 @@ std::uint64_t hash_pools(const std::vector<const Pool*>& pools) {
   return h;
 }
 
-std::string hex64(std::uint64_t x) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(x));
-  return buf;
-}
-
 }  // namespace tritri::bench

@@ -12,6 +12,7 @@
 #include "cases/casefile.hpp"
 #include "cases/label.hpp"
 #include "cases/util/random.hpp"
+#include "cases/util/text.hpp"
 
 #include <array>
 #include <cstdint>
@@ -67,6 +68,5 @@ Pool make_pool(std::string workload, std::string value, std::uint64_t seed, std:
 
 // 64-bit FNV-1a over the bytes of every pair of every pool, in order: the "corpus hash".
 std::uint64_t hash_pools(const std::vector<const Pool*>& pools);
-std::string hex64(std::uint64_t x);
 
 }  // namespace tritri::bench

@@ -55,6 +55,6 @@ std::vector<std::pair<std::string, std::string>> run_context(const Options& opti
 // Google Benchmark's JSON (NaN made null) with a "tritri" section of our summaries, written
 // atomically.
 void write_json(const std::string& path, const std::string& google_json, const Entries& entries,
-                const std::vector<PlannedPool>& pools, const Summary& summary);
+                const std::vector<PlannedPool>& pools, const Summary& summary, const CorpusIdentity& corpus);
 
 }  // namespace tritri::bench

@@ -7,9 +7,11 @@
 // and add its kind to the list in harness/bench/CMakeLists.txt. Nothing else changes.
 #pragma once
 
+#include "cases/corpus_identity.hpp"
 #include "harness/bench/pools.hpp"
 #include "tritri/algorithm.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -21,8 +23,9 @@ namespace tritri::bench {
 struct WorkloadInput {
   PoolOptions pool;                // the default pool size, and the run's seed
   bool quick = false;              // CI: family draws from the corpus generator's quick corpus
-  std::vector<Case> cases;         // family: the cases given (--cases); empty: the generator's
-  std::string cases_source;        // where they came from
+  // family: the case files given (--cases) and how to read them; no files: the generator's.
+  CorpusIdentity corpus;
+  std::function<std::vector<Case>()> read_cases;
 };
 
 struct WorkloadPools {
@@ -93,6 +96,7 @@ struct PlannedPool {
 struct Planned {
   std::vector<PlannedPool> pools;
   std::vector<std::pair<std::string, std::string>> context;
+  std::string cache_key;  // what the pools depend on (pool_cache.hpp); "" when not cached
 };
 Planned build_pools(const std::vector<Selected>& selected, const WorkloadInput& input);
 

@@ -182,13 +182,21 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
   }
 }
 
+nlohmann::json corpus_json(const CorpusIdentity& corpus) {
+  nlohmann::json files = nlohmann::json::array();
+  for (const CorpusFile& f : corpus.files)
+    files.push_back({{"path", f.path}, {"bytes", f.bytes}, {"hash", f.hash}, {"generated_by", f.generated_by}});
+  return {{"hash", corpus.hash}, {"generated_by", corpus.generated_by}, {"files", files}};
+}
+
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                       const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs,
-                      const std::vector<Scorecard>& scorecards) {
+                      const std::vector<Scorecard>& scorecards, const CorpusIdentity& corpus) {
   nlohmann::json doc;
   doc["schema"] = "tritri-check/2";
   doc["oracle"] = oracle_description();
   doc["inputs"] = inputs;
+  doc["corpus"] = corpus_json(corpus);
   doc["case_count"] = cases.size();
   doc["algorithms"] = nlohmann::json::array();
   for (const Algorithm* a : result.algorithms) doc["algorithms"].push_back(algorithm_json(*a));

@@ -1,8 +1,11 @@
 // What `tritri check` shows and writes: the table, paste-ready failures, JSON, baselines.
 #pragma once
 
+#include "cases/corpus_identity.hpp"
 #include "harness/check/check.hpp"
 #include "harness/check/scorecard.hpp"
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <iosfwd>
 #include <set>
@@ -32,9 +35,14 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
 // The JSON document described in harness/README.md (schema "tritri-check/2"). With groupings,
 // "families" and each tally's "family" name groups (grouping.hpp), and "group_by" lists them.
 // With scorecards (tritri check --scorecard), "scorecards" holds them (scorecard.hpp).
+// "corpus" is the identity of the input files (cases/corpus_identity.hpp), as tritri bench
+// records it too.
 void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                       const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs,
-                      const std::vector<Scorecard>& scorecards = {});
+                      const std::vector<Scorecard>& scorecards = {}, const CorpusIdentity& corpus = {});
+
+// The JSON form of a corpus identity, the same in check's and bench's documents.
+nlohmann::json corpus_json(const CorpusIdentity& corpus);
 
 // A baseline: the disagreements with the oracle that are known and recorded, one per row:
 //   algorithm <TAB> case <TAB> level <TAB> answer <TAB> oracle

@@ -32,7 +32,8 @@ constexpr const char* kHelp =
     "to the reference, the operation counts of the counting instantiations, the harness\n"
     "floor (and the null algorithm) and the repetitions' spread.\n\n"
     "  --quick            CI: pools of 4096 pairs, the CI corpus, 3 repetitions, short runs\n"
-    "  --algo NAME        algorithms to time (repeat, or NAME,NAME); default all. The\n"
+    "  --algo NAME        algorithms to time (repeat, or NAME,NAME); default all but the\n"
+    "                     x86-64-v3/FMA builds (NAME@v3fma), which run when named. The\n"
     "                     reference and the floors are always included\n"
     "  --level L          overlap, relation or segment (repeatable); default all\n"
     "  --workload W       ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N\n"
@@ -55,9 +56,11 @@ constexpr const char* kHelp =
     "  --list             build the pools, list the benchmarks' names and exit\n"
     "  --cache DIR        keep the labelled pools in DIR and reuse them on the next run with\n"
     "                     the same workloads, seed, pool size, cases, generator and oracle\n"
-    "                     (default $XDG_CACHE_HOME/tritri, else ~/.cache/tritri); an entry\n"
-    "                     that is stale or corrupt is rebuilt, never trusted\n"
-    "  --no-cache         build the pools afresh and keep nothing\n\n"
+    "                     (default $XDG_CACHE_HOME/tritri, else ~/.cache/tritri); with them\n"
+    "                     each algorithm's check on each pool, reused while the code loaded\n"
+    "                     (tritri, its libraries, the plug-ins) is the same file for file.\n"
+    "                     An entry that is stale or corrupt is rebuilt, never trusted\n"
+    "  --no-cache         build the pools and check afresh, and keep nothing\n\n"
     "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
     "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
     "                     process), a pair that makes no progress for S seconds is a timeout\n"
@@ -104,8 +107,8 @@ bench::Options options_from(const Args& args) {
   options.json_path = json == "-" ? "" : json;
   const auto case_files = args.values("--cases");
   if (!case_files.empty()) {
-    options.family_cases = load_cases(case_files);
-    for (const auto& f : case_files) options.family_source += (options.family_source.empty() ? "" : " ") + f;
+    options.family_corpus = identify_corpus(case_files);
+    options.read_family_cases = [case_files] { return load_cases(case_files); };
   }
   return options;
 }

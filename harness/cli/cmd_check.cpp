@@ -97,14 +97,16 @@ void print_per_algorithm(const CheckResult& result, const BaselineComparison& co
 // The JSON and the baseline the command line asks for, each written atomically.
 void write_outputs(const Args& args, const CheckResult& result, const std::vector<Case>& cases,
                    const std::vector<OracleRecord>& oracle, const std::vector<Scorecard>& scorecards) {
-  if (auto json = args.value("--json"))
+  if (auto json = args.value("--json")) {
+    const CorpusIdentity corpus = identify_corpus(args.positional());
     write_file_atomically(*json, [&](std::ostream& out) {
       if (args.value("--json-max-failures"))
         write_check_json(out, with_failures_capped(result, cases, args.count("--json-max-failures", 0)), cases,
-                         oracle, args.positional(), scorecards);
+                         oracle, args.positional(), scorecards, corpus);
       else
-        write_check_json(out, result, cases, oracle, args.positional(), scorecards);
+        write_check_json(out, result, cases, oracle, args.positional(), scorecards, corpus);
     });
+  }
   if (auto out_path = args.value("--write-baseline"))
     write_baseline_file(*out_path, baseline_of(result, cases));
 }
@@ -169,7 +171,9 @@ constexpr const char* kUsageText =
     "answered and the exact point or segment, over the pair's bounding-box diagonal), their\n"
     "median and max, kind mismatches (answered empty/point/segment/area where the exact\n"
     "intersection has another dimension) and coplanar contacts answered without geometry.\n\n"
-    "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'\n"
+    "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'.\n"
+    "                       Default: all but the x86-64-v3/FMA builds (NAME@v3fma), which run\n"
+    "                       when named\n"
     "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
     "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
     "                       is new; list the recorded ones that no longer occur. Plain TSV,\n"

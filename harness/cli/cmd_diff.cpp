@@ -1,11 +1,14 @@
 // `tritri diff`: where two algorithms answer differently, case by case. Made to set a port
 // beside its authors' code (scripts/authors-code builds the originals as plug-ins), it works
-// for any two algorithms: no oracle is involved, only the two answers.
+// for any two algorithms, e.g. a port against its x86-64-v3 build (NAME@v3fma). Only the two
+// answers are compared; with --oracle each overlap difference is also judged: which side is
+// wrong, by a false positive or a false negative.
 #include "harness/cli/args.hpp"
 #include "harness/check/check.hpp"
 #include "harness/check/judge.hpp"
 #include "harness/cli/commands.hpp"
 #include "cases/util/atomic_file.hpp"
+#include "cases/util/progress.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -23,25 +26,32 @@ struct Difference {
 };
 
 struct FamilyTally {
-  std::size_t cases = 0, differ = 0;
+  std::size_t cases = 0, differ = 0, overlap_differ = 0;
+  // --oracle: among the overlap differences, the wrong side's error (false positive, negative).
+  std::size_t a_fp = 0, a_fn = 0, b_fp = 0, b_fn = 0;
 };
 
 struct PairResult {
   const Algorithm* a = nullptr;
   const Algorithm* b = nullptr;
   bool segment = false;  // both answer the segment level: it is compared too
+  bool judged = false;   // --oracle: the overlap differences are judged
   std::size_t overlap_differ = 0, segment_differ = 0, fate_differ = 0;
   std::map<std::string, FamilyTally> families;
   std::vector<Difference> differences;
 };
 
-// The answer that decides overlap: the overlap level, else the relation's dimension, else the
-// segment (as `tritri answer` and the judge derive it).
+// The answer that decides overlap, as the judge derives it (check.hpp's overlap_of).
 std::string overlap_word(const Algorithm& algorithm, const Answers& answers) {
   if (answers.declined) return "unsupported";
-  if (algorithm.answers(Level::overlap)) return std::string(to_string(answers.overlap));
-  if (algorithm.answers(Level::relation)) return std::string(to_string(implied_overlap(answers.relation)));
-  return std::string(to_string(implied_overlap(answers.segment)));
+  return std::string(to_string(overlap_of(algorithm, answers)));
+}
+
+// One side's overlap answer judged against the oracle: counted as a false positive or a
+// false negative when it is wrong.
+void tally_error(Overlap answer, const Truth& truth, std::size_t& fp, std::size_t& fn) {
+  if (judge_overlap(answer, truth) != Verdict::wrong) return;
+  ++(answer == Overlap::yes ? fp : fn);
 }
 
 // Same kind and, for a point or a segment, the same bits in every coordinate: a port that is
@@ -58,12 +68,14 @@ std::string fate_word(const Answers& answers) {
   return answers.declined ? "unsupported" : "ok";
 }
 
+// `truths`: the oracle's, one per case, with --oracle; empty without.
 PairResult compare_pair(const Algorithm& a, const Algorithm& b, const std::vector<Case>& cases,
-                        const IsolationOptions& isolation) {
+                        const std::vector<Truth>& truths, const IsolationOptions& isolation) {
   PairResult r;
   r.a = &a;
   r.b = &b;
   r.segment = a.answers(Level::segment) && b.answers(Level::segment);
+  r.judged = !truths.empty();
   const auto answers_a = answer_cases(a, cases, isolation);
   const auto answers_b = answer_cases(b, cases, isolation);
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -80,6 +92,11 @@ PairResult compare_pair(const Algorithm& a, const Algorithm& b, const std::vecto
     } else if (overlap_word(a, x) != overlap_word(b, y)) {
       d = Difference{i, "overlap", overlap_word(a, x), overlap_word(b, y)};
       ++r.overlap_differ;
+      ++tally.overlap_differ;
+      if (r.judged) {
+        tally_error(overlap_of(a, x), truths[i], tally.a_fp, tally.a_fn);
+        tally_error(overlap_of(b, y), truths[i], tally.b_fp, tally.b_fn);
+      }
     } else if (r.segment && !x.declined && !same_segment(x.segment, y.segment)) {
       d = Difference{i, "segment", segment_text(x.segment), segment_text(y.segment)};
       ++r.segment_differ;
@@ -98,9 +115,13 @@ void print_pair(std::ostream& out, const PairResult& r, const std::vector<Case>&
       << " answered differently (overlap " << r.overlap_differ << ", segment "
       << (r.segment ? std::to_string(r.segment_differ) : std::string("-")) << ", crash/timeout/unsupported "
       << r.fate_differ << ")\n";
-  out << "  family\tcases\tdiffer\n";
-  for (const auto& [family, t] : r.families)
-    if (t.differ > 0) out << "  " << family << '\t' << t.cases << '\t' << t.differ << '\n';
+  out << "  family\tcases\tdiffer" << (r.judged ? "\twrong: A fp\tA fn\tB fp\tB fn" : "") << '\n';
+  for (const auto& [family, t] : r.families) {
+    if (t.differ == 0) continue;
+    out << "  " << family << '\t' << t.cases << '\t' << t.differ;
+    if (r.judged) out << '\t' << t.a_fp << '\t' << t.a_fn << '\t' << t.b_fp << '\t' << t.b_fn;
+    out << '\n';
+  }
   // Paste-ready: the first few per family, each as a comment and the case in hex floats.
   std::map<std::string, std::size_t> shown;
   for (const auto& d : r.differences) {
@@ -117,14 +138,18 @@ nlohmann::json pair_json(const PairResult& r, const std::vector<Case>& cases, st
   nlohmann::json j = {{"a", r.a->name},
                       {"b", r.b->name},
                       {"segment_compared", r.segment},
+                      {"oracle", r.judged},
                       {"cases", cases.size()},
                       {"differ", total(r)},
                       {"overlap_differ", r.overlap_differ},
                       {"segment_differ", r.segment_differ},
                       {"fate_differ", r.fate_differ}};
   nlohmann::json families = nlohmann::json::array();
-  for (const auto& [family, t] : r.families)
-    families.push_back({{"family", family}, {"cases", t.cases}, {"differ", t.differ}});
+  for (const auto& [family, t] : r.families) {
+    nlohmann::json f = {{"family", family}, {"cases", t.cases}, {"differ", t.differ}, {"overlap_differ", t.overlap_differ}};
+    if (r.judged) f.update({{"a_fp", t.a_fp}, {"a_fn", t.a_fn}, {"b_fp", t.b_fp}, {"b_fn", t.b_fn}});
+    families.push_back(f);
+  }
   j["families"] = families;
   nlohmann::json examples = nlohmann::json::array();
   std::map<std::string, std::size_t> shown;
@@ -160,9 +185,10 @@ std::vector<std::pair<const Algorithm*, const Algorithm*>> chosen_pairs(const Ar
 }
 
 const char* const kDiffHelp =
-    "usage: tritri diff (--algo A --algo B | --pair A=B...) [--json OUT] [--examples N]\n"
+    "usage: tritri diff (--algo A --algo B | --pair A=B...) [--oracle] [--json OUT] [--examples N]\n"
     "                   [--plugin LIB | --exec COMMAND]... FILE...\n\n"
-    "Where two algorithms answer differently, case by case (no oracle: only their answers).\n"
+    "Where two algorithms answer differently, case by case (only their answers; --oracle also\n"
+    "judges the differences).\n"
     "Made for a port against its authors' code (scripts/authors-code builds the originals as\n"
     "plug-ins named orig-PORT): e.g.\n"
     "  tritri diff --plugin build/authors/libguigue-overlap.so --pair guigue03=orig-guigue03 FILE...\n"
@@ -172,14 +198,19 @@ const char* const kDiffHelp =
     "difference of its own ('crash/timeout/unsupported').\n"
     "Printed per pair: the counts, the families with differences, then the first N (--examples,\n"
     "default 3) differing cases of each family, paste-ready (a comment, then the case in hex).\n"
+    "  --pair A=B      a pair to compare (repeatable); or give exactly two --algo\n"
+    "  --oracle        label the cases with the exact oracle and judge each overlap difference:\n"
+    "                  per family, how many times A, and B, is the wrong side, by a false\n"
+    "                  positive (fp) or a false negative (fn); in the JSON a_fp, a_fn, b_fp, b_fn\n"
+    "                  per family (e.g. --pair moller97=moller97@v3fma: what the compiler changes)\n"
     "  --json OUT      also write the result as JSON (schema tritri-diff/1: per pair the counts,\n"
-    "                  per family cases and differ, and the examples)\n"
-    "  --pair A=B      a pair to compare (repeatable); or give exactly two --algo\n";
+    "                  per family cases, differ and overlap_differ, and the examples)\n";
 
 }  // namespace
 
 int run_diff(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo", "--pair", "--json", "--examples"}, kRunValuedOptions), kRunFlags);
+  Args args(argc, argv, with({"--algo", "--pair", "--json", "--examples"}, kRunValuedOptions),
+            with({"--oracle"}, kRunFlags));
   if (args.help()) {
     std::cout << kDiffHelp << '\n' << kRunOptionsHelp
               << "\nExit status: 0 when every pair answers alike; 1 when some differ; 2 on bad arguments or input.\n";
@@ -191,11 +222,16 @@ int run_diff(int argc, char** argv) {
   const std::size_t max_examples = args.count("--examples", 3);
   const auto cases = load_cases(args.positional());
   const auto isolation = isolation_options(args);
+  std::vector<Truth> truths;
+  if (args.flag("--oracle")) {
+    Progress progress("labelling", cases.size());
+    for (const OracleRecord& record : label_cases(cases, progress.callback())) truths.push_back(truth_of(record));
+  }
   nlohmann::json out = {{"schema", "tritri-diff/1"}, {"inputs", args.positional()}, {"case_count", cases.size()}};
   out["pairs"] = nlohmann::json::array();
   bool any = false;
   for (const auto& [a, b] : pairs) {
-    const PairResult r = compare_pair(*a, *b, cases, isolation);
+    const PairResult r = compare_pair(*a, *b, cases, truths, isolation);
     any = any || total(r) > 0;
     print_pair(std::cout, r, cases, max_examples);
     out["pairs"].push_back(pair_json(r, cases, max_examples));

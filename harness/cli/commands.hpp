@@ -30,7 +30,8 @@ int run_corpus(int argc, char** argv);
 int run_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
 int run_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/
 
-// Algorithms named by --algo (repeatable, or comma-separated); all when none is named. Throws
+// Algorithms named by --algo (repeatable, or comma-separated); when none is named, all but the
+// build variants (NAME@v3fma: named explicitly, Algorithm::build). Throws
 // UsageError naming an unknown algorithm and listing the known ones.
 std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& names);
 

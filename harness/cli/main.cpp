@@ -37,7 +37,8 @@ void print_usage(std::ostream& out) {
 std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& names) {
   std::vector<const Algorithm*> chosen;
   if (names.empty()) {
-    for (const auto& a : registry().all()) chosen.push_back(&a);
+    for (const auto& a : registry().all())
+      if (a.build.empty()) chosen.push_back(&a);
     return chosen;
   }
   for (const auto& list : names) {

@@ -20,6 +20,11 @@ install(TARGETS tritri_api tritri_algorithms ${_tritri_algorithm_targets} tritri
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS tritri RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The v3fma build variant's module (algorithms/CMakeLists.txt), where tritri looks for it: the
+# same path relative to bin/ as in the build tree.
+if(TARGET tritri_v3fma)
+  install(TARGETS tritri_v3fma LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/tritri)
+endif()
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/algorithms/api/tritri DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")

@@ -15,3 +15,10 @@ cd "$work/build"
 TRITRI_WRITE_BASELINE=1 ./my_triangle_test --gtest_brief=1
 ./my_triangle_test --gtest_brief=1
 grep -q . separating-axes-expected-failures.tsv
+# The installed tritri finds the v3fma build's module where the package put it (when one was
+# built and this CPU can run it: else tritri says why on stderr and lists none).
+if find "$work/prefix" -name 'libtritri_v3fma.so' | grep -q .; then
+  "$work/prefix/bin/tritri" list --tsv >"$work/list.tsv" 2>"$work/list.err"
+  grep -q 'is not loaded' "$work/list.err" || grep -q '^moller97@v3fma	' "$work/list.tsv" ||
+    { echo "the installed tritri does not load its v3fma module:" >&2; cat "$work/list.err" >&2; exit 1; }
+fi

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Copies a small real run into tests/fixture/, trimmed to what the report reads.
 
-The fixture was made from a run on a tiny corpus (see fixture/HOW.md). Only bench.json is cut:
-its "benchmarks" array (Google Benchmark's raw repetitions) is not read by the report and is
-most of the file. Rerun this after a schema change, then update the tests' expectations.
+The fixture was made from a run on a tiny corpus (see fixture/HOW.md). Only the bench files
+(bench.json, compiler-bench.json) are cut: their "benchmarks" array (Google Benchmark's raw
+repetitions) is not read by the report and is most of the file. Rerun this after a schema change, then update the tests' expectations.
 """
 
 import json
@@ -22,7 +22,7 @@ def main(src):
             continue
         with open(os.path.join(src, name), encoding="utf-8") as f:
             doc = json.load(f)
-        if name == "bench.json":
+        if name == "bench.json" or name.endswith("-bench.json"):
             doc.pop("benchmarks", None)
             for r in doc.get("tritri", {}).get("results", []):
                 r.pop("ns_per_pair", None)

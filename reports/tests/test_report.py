@@ -96,8 +96,8 @@ class ReportFromFixture(unittest.TestCase):
 
     def test_the_parts_are_there(self):
         for heading in ("1 Correctness", "2 Speed against error", "3 Time against intersection ratio",
-                        "4 Stability", "5 The papers' tables", "6 Scenes: meshes in motion through a BVH broad phase",
-                        "7 Failure gallery", "8 Provenance"):
+                        "4 Stability", "5 What the compiler changes", "6 The papers' tables",
+                        "7 Scenes: meshes in motion through a BVH broad phase", "8 Failure gallery", "9 Provenance"):
             self.assertIn("## " + heading + "\n", self.text)
 
     def test_figures_for_each_part(self):
@@ -239,6 +239,61 @@ class ReportFromFixture(unittest.TestCase):
                 self.assertEqual(cell, markdown.pct(wrong / judged), name)
 
     # ---- part 5 ----
+    def test_exact_table_gives_each_pools_fallback_shares_and_both_paths(self):
+        results = load("bench.json")["tritri"]["results"]
+        header, rows = tables_in(self.text, "3.3 The exact test: where its time goes")[0]
+        self.assertEqual(header[:3], ["pool", "exact ns", "exact-scalar ns"])
+        exact = {e["workload"]: e for e in results if e["algorithm"] == "exact" and e["level"] == "overlap"}
+        scalar = {e["workload"]: e for e in results if e["algorithm"] == "exact-scalar" and e["level"] == "overlap"}
+        self.assertEqual(sorted(r[0] for r in rows), sorted(exact))
+        self.assertTrue(any(r[0].startswith("family:") for r in rows))
+        for r in rows:
+            e, c = exact[r[0]], exact[r[0]]["path_counters"]
+            self.assertEqual(r[1], markdown.ns(e["ns_per_pair_median"]), r[0])
+            self.assertEqual(r[2], markdown.ns(scalar[r[0]]["ns_per_pair_median"]), r[0])
+            self.assertEqual(r[header.index("undecided by SIMD")], markdown.pct(c["undecided_by_simd"] / c["pairs"]), r[0])
+            self.assertEqual(r[header.index("to scalar path")], markdown.pct(c["to_scalar"] / c["pairs"]), r[0])
+            self.assertIn("isa:" + r[-1], c)
+            # the scalar path alone sends every pair to the scalar classification
+            sc = scalar[r[0]]["path_counters"]
+            self.assertEqual(sc["to_scalar"], sc["pairs"], r[0])
+
+    def test_compiler_answer_tables_match_the_diff(self):
+        diff = load("compiler-diff.json")
+        tables = tables_in(self.text, "5 What the compiler changes")
+        _, per_port = tables[0]
+        pairs = [p for p in diff["pairs"] if p["b"] == p["a"] + "@v3fma"]
+        self.assertEqual([r[0] for r in per_port], [p["a"] for p in pairs])
+        changed_families = []
+        for row, p in zip(per_port, pairs):
+            sums = {k: sum(f[k] for f in p["families"]) for k in ("a_fp", "a_fn", "b_fp", "b_fn")}
+            self.assertEqual(row[1:6], [str(p["overlap_differ"]), str(sums["b_fp"]), str(sums["b_fn"]),
+                                        str(sums["a_fp"]), str(sums["a_fn"])], p["a"])
+            # where the builds' yes/no answers differ, exactly one of them is wrong
+            self.assertEqual(sum(sums.values()), p["overlap_differ"], p["a"])
+            changed_families += [(p["a"], f) for f in p["families"] if f["overlap_differ"]]
+        _, per_family = tables[1]
+        self.assertEqual(len(per_family), len(changed_families))
+        self.assertGreater(len(per_family), 0)
+        for row in per_family:
+            f = [f for a, f in changed_families if a == row[0] and f["family"] == row[1]][0]
+            self.assertEqual(row[3:], [str(f["overlap_differ"]), "%d / %d" % (f["b_fp"], f["b_fn"]),
+                                       "%d / %d" % (f["a_fp"], f["a_fn"])])
+
+    def test_compiler_speed_table_is_v3fma_over_baseline(self):
+        bench = load("compiler-bench.json")["tritri"]["results"]
+        header, rows = tables_in(self.text, "5 What the compiler changes")[2]
+        self.assertEqual(header[3], "R=0")
+        self.assertEqual(header[-1], "R=1")
+        median = {(e["algorithm"], e["level"], e["workload"]): e["ns_per_pair_median"] for e in bench}
+        self.assertEqual(len(rows), len({e["algorithm"] for e in bench if e["algorithm"].endswith("@v3fma")}))
+        for r in rows:
+            for rtext, cell in zip(header[3:], r[3:]):
+                w = "ratio:%.2f" % float(rtext[2:])
+                self.assertEqual(cell, markdown.ratio(median[(r[0] + "@v3fma", r[1], w)] / median[(r[0], r[1], w)]),
+                                 (r[0], w))
+
+    # ---- part 6 ----
     def test_sabharwal_table_quotes_the_paper_and_the_bench(self):
         header, rows = tables_in(self.text, "Sabharwal & Leopold 2015, Table 1")[0]
         by_type = {r[0]: r for r in rows}
@@ -264,7 +319,7 @@ class ReportFromFixture(unittest.TestCase):
 
     # ---- parts 6 and 7 ----
     def test_gallery_shows_listed_failures_with_coordinates(self):
-        text = section(self.text, "7 Failure gallery")
+        text = section(self.text, "8 Failure gallery")
         failures = self.check["failures"]
         shown = [f for f in failures if "`%s`" % f["case"] in self.text]
         self.assertTrue(shown)
@@ -273,7 +328,7 @@ class ReportFromFixture(unittest.TestCase):
         self.assertIn("three orthographic views", text)
 
     def test_provenance_names_machine_sha_seed_and_hash(self):
-        (header, rows), = tables_in(self.text, "8 Provenance")[:1]
+        (header, rows), = tables_in(self.text, "9 Provenance")[:1]
         values = dict((r[0], r[1]) for r in rows)
         prov = load("provenance.json")
         man = load("corpus.json")
@@ -293,6 +348,7 @@ class MissingInputs(unittest.TestCase):
             with open(os.path.join(out, "README.md"), encoding="utf-8") as f:
                 text = f.read()
             self.assertIn(markdown.NOT_MEASURED, text)
+            self.assertIn("compiler-diff.json", section(text, "5 What the compiler changes"))
             self.assertEqual(r.figures, [])
         finally:
             shutil.rmtree(src)

@@ -21,6 +21,8 @@ FILES = {
     "sweeps_float": "check-sweeps-float.json",
     "builtin": "check-builtin.json",
     "bench": "bench.json",
+    "compiler_diff": "compiler-diff.json",
+    "compiler_bench": "compiler-bench.json",
 }
 # The named suites' checks (check-yuhe13.json, ...) are named by the papers' published files.
 

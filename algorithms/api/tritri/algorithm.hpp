@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace tritri {
@@ -92,6 +93,16 @@ struct StageEntry {
   StagePrepareBatch prepare = nullptr;
 };
 
+// Where an algorithm's batches went, as named counts (e.g. the exact test: pairs left undecided by
+// its SIMD filter, pairs decided by its exact engine). `tritri bench` resets them, runs each
+// level once over each pool on the calling thread, untimed, and records what `read` returns.
+using CounterList = std::vector<std::pair<std::string, std::uint64_t>>;
+struct PathCounters {
+  void (*reset)() = nullptr;
+  CounterList (*read)() = nullptr;
+  explicit operator bool() const { return reset && read; }
+};
+
 // What an algorithm says about itself, for registering it in one expression:
 //   Algorithm a({.name = "moller97", .citation = kCitation, .summary = "...", .tolerance = snap});
 struct Declaration {
@@ -137,8 +148,14 @@ struct Algorithm {
 
   // Stages timed on their own by `tritri bench` (see StageEntry). Optional.
   std::vector<StageEntry> stages;
+  // Counts of the paths its batches took (see PathCounters). Optional.
+  PathCounters counters;
 
   std::string folder;  // filled in by the registry: the algorithm's folder under algorithms/
+  // "" for the project's build; the build variant's name ("v3fma") for an entry of a second build
+  // of the same code (algorithms/api/build_variants.hpp). Variants double a run's time, so they
+  // run when named (--algo NAME@v3fma), not by default.
+  std::string build;
 
   // The batch entry point of level L on scalar S; nullptr when it has none.
   template <Level L>

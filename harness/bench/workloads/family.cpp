@@ -22,23 +22,30 @@ class FamilyWorkload : public Workload {
   WorkloadPools build(const std::vector<std::string>& values, const WorkloadInput& input) const override {
     const bool every = std::find(values.begin(), values.end(), "*") != values.end();
     WorkloadPools built;
-    std::vector<Case> generated;
-    if (input.cases.empty()) {
+    std::vector<Case> cases;
+    if (input.corpus.files.empty()) {
       auto options = input.quick ? corpus::quick_options(input.pool.seed) : corpus::default_options(input.pool.seed);
       if (!every) options.families = values;
-      generated = corpus::generate_corpus(options);
-      built.context.emplace_back("family_source", std::string("tritri corpus") + (input.quick ? " --quick" : "") +
-                                                      " --seed " + std::to_string(input.pool.seed) + " (cases/generator)");
-    } else if (!input.cases_source.empty()) {
-      built.context.emplace_back("family_source", input.cases_source);
+      cases = corpus::generate_corpus(options);
+      built.context.emplace_back("family_source", generator_source(input));
+    } else {
+      cases = input.read_cases();
+      std::string files;
+      for (const CorpusFile& f : input.corpus.files) files += (files.empty() ? "" : " ") + f.path;
+      built.context.emplace_back("family_source", files);
     }
-    for (auto& p : family_pools(input.cases.empty() ? generated : input.cases, input.pool))
+    for (auto& p : family_pools(cases, input.pool))
       if (every || std::find(values.begin(), values.end(), p.value) != values.end()) built.pools.push_back(std::move(p));
     return built;
   }
 };
 
 }  // namespace
+
+std::string generator_source(const WorkloadInput& input) {
+  return std::string("tritri corpus") + (input.quick ? " --quick" : "") + " --seed " + std::to_string(input.pool.seed) +
+         " (cases/generator)";
+}
 
 std::unique_ptr<Workload> make_family_workload() { return std::make_unique<FamilyWorkload>(); }
 

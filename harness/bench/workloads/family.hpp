@@ -5,7 +5,7 @@
 //             costs. Its default set is every family of those cases ("*").
 #pragma once
 
-#include "harness/bench/pools.hpp"
+#include "harness/bench/workload.hpp"
 
 #include <vector>
 
@@ -16,5 +16,9 @@ namespace tritri::bench {
 // zero-area triangles), shuffled once with the seed. A family smaller than options.size stays as
 // it is (it is never replayed to fill the pool); the caller warns about small pools.
 std::vector<Pool> family_pools(const std::vector<Case>& cases, const PoolOptions& options);
+
+// Where the family pools come from when no case files are given: "tritri corpus [--quick] --seed S
+// (cases/generator)".
+std::string generator_source(const WorkloadInput& input);
 
 }  // namespace tritri::bench

@@ -10,8 +10,9 @@ A section is a module with
 The report writes each heading, then calls render.
 """
 
-from . import (asymmetry, authors, baseline, correctness, float_double, gallery, header, moller97, papers, provenance,
-               sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06, unquoted, yuhe13)
+from . import (asymmetry, authors, baseline, compiler, correctness, exact_test, float_double, gallery, header,
+               moller97, papers, provenance, sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06,
+               unquoted, yuhe13)
 
 SECTIONS = [
     header,
@@ -22,8 +23,10 @@ SECTIONS = [
     baseline,
     speed_error,
     time_ratio,
+    exact_test,
     stability,
     float_double,
+    compiler,
     papers,
     moller97,
     tropp06,
