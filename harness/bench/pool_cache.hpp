@@ -20,7 +20,7 @@ namespace tritri::bench {
 
 // Bump when anything that shapes the pools changes without changing the key's other parts: a
 // workload's drawing, scrambling, shuffling, the generator's constructions.
-inline constexpr int kPoolGeneratorVersion = 1;
+inline constexpr int kPoolGeneratorVersion = 2;
 
 struct PoolCacheOptions {
   bool enabled = true;

@@ -101,32 +101,56 @@ class SceneWorkload : public Workload {
   }
 
  private:
+  // The stream's frames as [begin, end) row ranges, in order.
+  static std::vector<std::pair<std::size_t, std::size_t>> frame_ranges(const scenes::SceneStream& s) {
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;
+    for (std::size_t begin = 0; begin < s.pairs.size();) {
+      std::size_t end = begin;
+      while (end < s.pairs.size() && s.pairs[end].frame == s.pairs[begin].frame) ++end;
+      ranges.emplace_back(begin, end);
+      begin = end;
+    }
+    return ranges;
+  }
+
+  // Whole frames up to the pool size, spread evenly over the motion (the n frames at the middles
+  // of n equal parts of it, for the largest n that fits; at least one): taking the first frames
+  // instead would time only the start of a scene whose contacts come late.
+  static std::vector<std::pair<std::size_t, std::size_t>> frames_in_pool(const scenes::SceneStream& s,
+                                                                         std::size_t pool_size) {
+    const auto ranges = frame_ranges(s);
+    const std::size_t f = ranges.size();
+    for (std::size_t n = f; n >= 1; --n) {
+      std::vector<std::pair<std::size_t, std::size_t>> chosen;
+      std::size_t rows = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        chosen.push_back(ranges[(2 * i + 1) * f / (2 * n)]);
+        rows += chosen.back().second - chosen.back().first;
+      }
+      if (rows <= pool_size || n == 1) return chosen;
+    }
+    return {};
+  }
+
   static void add_pools(const std::string& value, const scenes::SceneStream& s, const WorkloadInput& input,
                         WorkloadPools& built) {
-    // Whole frames, in order, up to the pool size (at least one frame).
-    std::size_t end = 0;
-    int frames = 0;
-    while (end < s.pairs.size()) {
-      std::size_t next = end;
-      while (next < s.pairs.size() && s.pairs[next].frame == s.pairs[end].frame) ++next;
-      if (frames > 0 && next > input.pool.size) break;
-      end = next;
-      ++frames;
-    }
+    const auto chosen = frames_in_pool(s, input.pool.size);
+    const int frames = static_cast<int>(chosen.size());
     std::vector<TrianglePair> pairs;
-    for (std::size_t r = 0; r < end; ++r) pairs.push_back(s.pairs[r].pair);
+    std::vector<std::size_t> frame_end;  // in `pairs`
+    for (const auto& [begin, end] : chosen) {
+      for (std::size_t r = begin; r < end; ++r) pairs.push_back(s.pairs[r].pair);
+      frame_end.push_back(pairs.size());
+    }
     const auto truth = label_pairs(pairs);
     std::vector<std::size_t> all, any;
-    for (std::size_t r = 0; r < end; ++r) all.push_back(r);
+    for (std::size_t r = 0; r < pairs.size(); ++r) all.push_back(r);
     // any contact: each frame's prefix up to its first intersecting pair
-    for (std::size_t r = 0; r < end;) {
-      std::size_t e = r;
-      while (e < end && s.pairs[e].frame == s.pairs[r].frame) ++e;
-      for (std::size_t q = r; q < e; ++q) {
+    for (std::size_t k = 0, r = 0; k < frame_end.size(); r = frame_end[k++]) {
+      for (std::size_t q = r; q < frame_end[k]; ++q) {
         any.push_back(q);
         if (truth[q].overlap) break;
       }
-      r = e;
     }
     const std::uint64_t seed = sub_seed(input.pool.seed, "scene:" + value);
     Pool ordered = labelled("scene", value, seed, pairs, truth, all);

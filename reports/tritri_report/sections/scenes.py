@@ -141,8 +141,10 @@ def render(run, part):
     ctx, res = parse_context(bench), results(bench)
     skip = floors(bench)
     rows, wrong_rows, share_rows, points = scene_rows(ctx, res, skip)
-    part.add("Each scene is meshes in motion (cases/scenes); its pool is every frame's candidate pairs, the "
-             "leaf pairs FCL's BVH traversal lets through, in traversal order, labelled by the oracle. "
+    part.add("Each scene is meshes in motion (cases/scenes); its pool is the candidate pairs of its frames, the "
+             "leaf pairs FCL's BVH traversal lets through, in traversal order, labelled by the oracle; when "
+             "all frames exceed the pool size, whole frames spread evenly over the motion (cand./frame is "
+             "over the frames in the pool). "
              "`scene:V` is the all-contacts query (intersection curve for a self scene), `scene-any:V` the "
              "any-contact query (each frame up to its first contact), `scene-shuffled:V` the same pairs "
              "shuffled. Times are medians of `tritri bench`, ns per pair.\n")
