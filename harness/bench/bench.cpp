@@ -100,9 +100,13 @@ int run(const Options& options, std::ostream& out) {
   const std::string corpus_hash = corpus_hash_of(planned.pools);
   for (const auto& [k, v] : run_context(options, planned, corpus_hash)) benchmark::AddCustomContext(k, v);
   print_pools(planned.pools, out);
+  // What the timing will take: each repetition runs at least its minimum time after its warm-up;
+  // finding the iteration count adds about a tenth (measured on the main job's bench).
+  const double timing_seconds = 1.1 * static_cast<double>(entries.timed.size()) * options.repetitions *
+                         (options.min_time + options.min_warmup_time);
   out << "corpus hash " << corpus_hash << "; " << entries.timed.size() << " benchmarks, " << options.repetitions
       << " repetitions each" << (options.interleave ? ", randomly interleaved" : "") << "; times relative to "
-      << lineup.reference_row() << ".\n\n";
+      << lineup.reference_row() << "; about " << static_cast<long>(timing_seconds + 0.5) << " s of timing.\n\n";
   out.flush();
   if (options.list_only) {
     list_benchmarks();
