@@ -87,19 +87,27 @@ TEST(BenchAndCompare, AnInjectedSlowdownIsSignificantAndAnUnchangedRerunIsNot) {
     return json;
   };
   const auto base = bench("tritri_boxes", "base.json");
-  const auto rerun = bench("tritri_boxes", "rerun.json");
   const auto slow = bench("tritri_boxes_slow", "slow.json");
-  auto boxes_row = [](const std::string& out) {
-    const auto at = out.find("boxes/overlap/ratio:0.50");
+  auto row_of = [](const std::string& out, const std::string& name) {
+    const auto at = out.find(name + "/overlap/ratio:0.50");
     return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
   };
   Outcome r = run_tritri("compare --min-change 0.05 " + base + " " + slow);
   EXPECT_EQ(r.status, 1) << r.out;
-  EXPECT_NE(boxes_row(r.out).find("slower (significant)"), std::string::npos) << r.out;
-  r = run_tritri("compare --min-change 0.05 " + base + " " + rerun);
-  const std::string row = boxes_row(r.out);
-  ASSERT_FALSE(row.empty()) << r.out;
-  EXPECT_EQ(row.find("(significant)"), std::string::npos) << r.out;
+  EXPECT_NE(row_of(r.out, "boxes").find("slower (significant)"), std::string::npos) << r.out;
+  // A plain rerun is judged only while the machine stays as it was: when the harness's own floor
+  // (the same loop in both runs) moved significantly, the load changed between the runs (CI beside
+  // other jobs) and the rerun is taken again, up to three times.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const auto rerun = bench("tritri_boxes", "rerun.json");
+    r = run_tritri("compare --min-change 0.05 " + base + " " + rerun);
+    const std::string floor = row_of(r.out, "floor"), boxes = row_of(r.out, "boxes");
+    ASSERT_FALSE(boxes.empty() || floor.empty()) << r.out;
+    if (floor.find("(significant)") != std::string::npos) continue;
+    EXPECT_EQ(boxes.find("(significant)"), std::string::npos) << r.out;
+    return;
+  }
+  GTEST_SKIP() << "the machine's load changed during every rerun (the floor itself moved): " << r.out;
 }
 
 }  // namespace
