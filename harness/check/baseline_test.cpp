@@ -53,6 +53,11 @@ class Baseline : public testing::TestWithParam<std::string> {};
 TEST_P(Baseline, DisagreementsMatchTheRecordedOnes) {
   const Algorithm* algorithm = registry().find(GetParam());
   ASSERT_NE(algorithm, nullptr);
+#if defined(__SANITIZE_ADDRESS__)
+  // Which products a build variant fuses into FMAs is the optimiser's choice: the recorded
+  // answers are the release build's, and the instrumented build optimises differently.
+  if (!algorithm->build.empty()) GTEST_SKIP() << "the " << algorithm->build << " baseline is the release build's";
+#endif
   const auto path = std::filesystem::path(TRITRI_SOURCE_DIR) / "algorithms" / algorithm->folder /
                     "expected-failures.tsv";
   ASSERT_TRUE(std::filesystem::exists(path)) << "every algorithm folder records its disagreements in " << path;
