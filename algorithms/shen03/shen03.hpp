@@ -71,22 +71,9 @@ inline T snap(const T& d) {
   return below(abs(d), kTolerance) ? T(0) : d;
 }
 
-template <class T>
-struct Plane {
-  T n[3], d;
-};
-
-template <class T>
-inline Plane<T> plane_through(const T* a, const T* b, const T* c) {
-  const T e1x = b[0] - a[0], e1y = b[1] - a[1], e1z = b[2] - a[2];
-  const T e2x = c[0] - a[0], e2y = c[1] - a[1], e2z = c[2] - a[2];
-  Plane<T> p;
-  p.n[0] = e1y * e2z - e1z * e2y;
-  p.n[1] = e1z * e2x - e1x * e2z;
-  p.n[2] = e1x * e2y - e1y * e2x;
-  p.d = -(p.n[0] * a[0] + p.n[1] * a[1] + p.n[2] * a[2]);
-  return p;
-}
+// The published file computes its planes as Möller's does, operation for operation.
+using moller97::detail::Plane;
+using moller97::detail::plane_through;
 
 template <class T>
 inline T height(const Plane<T>& p, const T* x) {
