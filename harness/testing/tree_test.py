@@ -38,6 +38,7 @@ SIZE_EXCEPTIONS = {}
 SOURCE = (".cpp", ".hpp", ".h", ".c", ".inc", ".py")
 COMMENTED = SOURCE + (".cmake", ".sh", ".in")
 NOT_CHECKED = ("build/", "results/")
+TOP = set()  # the repository's top-level entries: set by check_paths from the file list
 
 PATH = re.compile(r"(?<![\w.+/-])([A-Za-z0-9_.+-]+(?:/[A-Za-z0-9_.+*<>{}-]+)+/?)(?::(\d+)(?:-(\d+))?)?")
 HEADING_CITE = re.compile(r"([\w./+-]*\.md)`?,\s*\\?\"([^\"\\]+)\\?\"")
@@ -140,9 +141,6 @@ def stale_references(files):
                     not any(h.startswith(m.group(2)) for h in headings(name)):
                 problems.append('%s: cites "%s" in %s, which has no such heading' % (path, m.group(2), name))
     return problems
-
-
-TOP = set()
 
 
 def check_paths():
