@@ -1,5 +1,7 @@
 #include "cases/oracle/oracle.hpp"
 
+#include "cases/oracle/cgal_result.hpp"
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 #include <CGAL/squared_distance_3.h>
@@ -77,7 +79,7 @@ Dimension degenerate_meet_dimension(const Shape& a, const Shape& b) {
         } else {
           auto result = CGAL::intersection(x, y);
           if (!result) return Dimension::none;
-          return boost::get<Segment>(&*result) ? Dimension::segment : Dimension::point;
+          return alternative<Segment>(*result) ? Dimension::segment : Dimension::point;
         }
       },
       a, b);
@@ -193,9 +195,10 @@ OracleRecord oracle_label(const TrianglePair& pair) {
   r.overlap = CGAL::do_intersect(a, b);
   const auto meet = CGAL::intersection(a, b);
   // Two independent CGAL code paths must agree; if they ever do not, the judge is not to be
-  // trusted on this pair and we say so rather than guess.
+  // trusted on this pair and we say so rather than guess. This and the checks below are the
+  // oracle contradicting itself, never bad input: an internal error (std::logic_error).
   if (r.overlap != static_cast<bool>(meet))
-    throw std::runtime_error("oracle: CGAL's do_intersect and intersection disagree");
+    throw std::logic_error("oracle: CGAL's do_intersect and intersection disagree");
 
   if (!r.overlap) {
     r.relation = r.coplanar ? Relation::coplanar_disjoint
@@ -203,17 +206,17 @@ OracleRecord oracle_label(const TrianglePair& pair) {
                               : Relation::disjoint;
     r.dimension = Dimension::none;
     const auto squared = CGAL::squared_distance(a, b);
-    if (squared == 0) throw std::runtime_error("oracle: disjoint triangles at distance zero");
+    if (squared == 0) throw std::logic_error("oracle: disjoint triangles at distance zero");
     r.separation = sqrt_to_double(squared);
     return r;
   }
 
   r.separation = 0.0;
-  if (const Point* p = boost::get<Point>(&*meet)) {
+  if (const Point* p = alternative<Point>(*meet)) {
     r.dimension = Dimension::point;
     r.relation = r.coplanar ? Relation::coplanar_point : Relation::touch_point;
     store_points(r, {*p});
-  } else if (const Segment* s = boost::get<Segment>(&*meet)) {
+  } else if (const Segment* s = alternative<Segment>(*meet)) {
     r.dimension = Dimension::segment;
     store_points(r, {s->source(), s->target()});
     if (r.coplanar) {
@@ -225,15 +228,16 @@ OracleRecord oracle_label(const TrianglePair& pair) {
                        : Relation::touch_segment;
     }
   } else {
-    if (!r.coplanar) throw std::runtime_error("oracle: an area intersection of non-coplanar triangles");
+    if (!r.coplanar) throw std::logic_error("oracle: an area intersection of non-coplanar triangles");
     r.dimension = Dimension::area;
     r.relation = Relation::coplanar_overlap;
-    if (const Tri* t = boost::get<Tri>(&*meet)) {
+    if (const Tri* t = alternative<Tri>(*meet)) {
       store_points(r, {t->vertex(0), t->vertex(1), t->vertex(2)});
     } else {
-      const auto& polygon = boost::get<std::vector<Point>>(*meet);
+      const auto* polygon = alternative<std::vector<Point>>(*meet);
+      if (!polygon) throw std::logic_error("oracle: an area intersection neither a triangle nor a polygon");
       r.point_count = 0;
-      for (const auto& p : polygon)
+      for (const auto& p : *polygon)
         if (r.point_count < 6) r.points[static_cast<std::size_t>(r.point_count++)] = to_double(p);
     }
   }

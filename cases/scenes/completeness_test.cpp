@@ -68,6 +68,28 @@ void compare(const std::vector<Candidate>& cand_in, bool self, const PairList& a
   t.aabb_not_cand += d2.size();
 }
 
+// Truth and box pairs per frame and body pair of a scene, computed once for every BV and mode.
+struct Item { int k, i, j; std::shared_ptr<const Mesh> mi, mj; Rigid ti, tj; PairList aabb, truth; };
+
+std::vector<Item> scene_items(const Scene& s) {
+  std::vector<Item> items;
+  for (int k = 0; k < s.frames; ++k)
+    for (auto [i, j] : s.body_pairs()) {
+      Item it{k, i, j, s.mesh_at(i, k), s.mesh_at(j, k), s.transform_at(i, k), s.transform_at(j, k), {}, {}};
+      const auto Vi = transformed(*it.mi, it.ti), Vj = s.self ? Vi : transformed(*it.mj, it.tj);
+      it.aabb = overlapping_box_pairs(Vi, it.mi->faces, Vj, it.mj->faces, s.self);
+      for (auto [a, b] : it.aabb) {
+        const auto& f = it.mi->faces[a];
+        const auto& g = it.mj->faces[b];
+        const bool hit = s.self ? self_pair_intersects(Vi, f, g)
+                                : exact_intersect(Vi[f[0]], Vi[f[1]], Vi[f[2]], Vj[g[0]], Vj[g[1]], Vj[g[2]]);
+        if (hit) it.truth.emplace_back(a, b);
+      }
+      items.push_back(std::move(it));
+    }
+  return items;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -94,23 +116,7 @@ int main(int argc, char** argv) {
               "missing", "cand-aabb", "aabb-cand", "dup", "result");
   for (const auto& name : names) {
     const Scene s = make_scene(name, cfg);
-    // Truth and box pairs per frame and body pair, computed once.
-    struct Item { int k, i, j; std::shared_ptr<const Mesh> mi, mj; Rigid ti, tj; PairList aabb, truth; };
-    std::vector<Item> items;
-    for (int k = 0; k < s.frames; ++k)
-      for (auto [i, j] : s.body_pairs()) {
-        Item it{k, i, j, s.mesh_at(i, k), s.mesh_at(j, k), s.transform_at(i, k), s.transform_at(j, k), {}, {}};
-        const auto Vi = transformed(*it.mi, it.ti), Vj = s.self ? Vi : transformed(*it.mj, it.tj);
-        it.aabb = overlapping_box_pairs(Vi, it.mi->faces, Vj, it.mj->faces, s.self);
-        for (auto [a, b] : it.aabb) {
-          const auto& f = it.mi->faces[a];
-          const auto& g = it.mj->faces[b];
-          const bool hit = s.self ? self_pair_intersects(Vi, f, g)
-                                  : exact_intersect(Vi[f[0]], Vi[f[1]], Vi[f[2]], Vj[g[0]], Vj[g[1]], Vj[g[2]]);
-          if (hit) it.truth.emplace_back(a, b);
-        }
-        items.push_back(std::move(it));
-      }
+    const std::vector<Item> items = scene_items(s);
     for (BV bv : bvs) {
       std::vector<Mode> modes;
       if (s.self) modes = {Mode::WorldRebuild};  // self: one tree in its own frame

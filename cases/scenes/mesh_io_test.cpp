@@ -46,18 +46,8 @@ void expect_error(const std::string& what, const std::string& path, std::vector<
 
 const char* kTet = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  dir = fs::temp_directory_path() / ("scenes_mesh_io_test-" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  std::string data = argc > 1 ? argv[1] : "";
-  if (data.empty()) try {
-      data = cgal_mesh_dir();
-    } catch (const std::exception& e) {
-      std::printf("SKIP the real-mesh checks: %s\n", e.what());
-    }
-
+// Reading: good input, and bad input named by file, line and problem.
+void check_reading() {
   // --- good input
   {
     Mesh m = read_mesh(write("tet.off", kTet));
@@ -120,7 +110,10 @@ int main(int argc, char** argv) {
     stl.append(2, '\0');
     expect_error("NaN in binary STL", write("nan.stl", stl), {"nan.stl", "NaN"});
   }
-  // --- the same sphere in three formats of CGAL's data set
+}
+
+// The same sphere in three formats of CGAL's data set.
+void check_real_meshes(const std::string& data) {
   try {
     const auto a = read_mesh(data + "/sphere.off"), b = read_mesh(data + "/sphere.ply"), c = read_mesh(data + "/sphere.stl");
     check(a.faces.size() == b.faces.size() && b.faces.size() == c.faces.size(),
@@ -129,8 +122,9 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     check(false, "sphere.off/.ply/.stl readable", e.what());
   }
+}
 
-  // --- procedural meshes
+void check_procedural_meshes() {
   auto no_degenerate = [](const Mesh& m) {
     for (const auto& f : m.faces) {
       const Vec3 n = (m.vertices[f[1]] - m.vertices[f[0]]).cross(m.vertices[f[2]] - m.vertices[f[0]]);
@@ -184,6 +178,22 @@ int main(int argc, char** argv) {
     check(ring == 0 && spindle > 0, "ring torus has no self-intersection, spindle torus has",
           std::to_string(ring) + " / " + std::to_string(spindle));
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  dir = fs::temp_directory_path() / ("scenes_mesh_io_test-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::string data = argc > 1 ? argv[1] : "";
+  if (data.empty()) try {
+      data = cgal_mesh_dir();
+    } catch (const std::exception& e) {
+      std::printf("SKIP the real-mesh checks: %s\n", e.what());
+    }
+  check_reading();
+  check_real_meshes(data);
+  check_procedural_meshes();
   std::printf("%d passed, %d failed\n", passed, failed);
   return failed ? 1 : 0;
 }

@@ -1,6 +1,8 @@
 // exact triangle answers. See oracle.hpp.
 #include "cases/scenes/oracle.hpp"
 
+#include "cases/oracle/cgal_result.hpp"
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
@@ -52,8 +54,8 @@ std::string contact_kind(const Vec3& p1, const Vec3& p2, const Vec3& p3,
   const auto x = CGAL::intersection(EK::Triangle_3(a, b, c), EK::Triangle_3(d, e, f));
   std::string kind = "none";
   if (x) {
-    if (boost::get<EK::Point_3>(&*x)) kind = "point";
-    else if (boost::get<EK::Segment_3>(&*x)) kind = "segment";
+    if (alternative<EK::Point_3>(*x)) kind = "point";
+    else if (alternative<EK::Segment_3>(*x)) kind = "segment";
     else kind = "area";
   }
   return (coplanar ? "coplanar " : "") + kind;

@@ -90,7 +90,7 @@ void write_json(const std::string& path, const std::string& google_json, const E
     for (const auto& e : entries.timed) results.push_back(result_json(*e, summary));
     for (const auto& p : pools) pool_list.push_back(pool_json(p.pool));
     for (const auto& e : entries.untimed) untimed.push_back(untimed_json(*e));
-    doc["tritri"] = {{"reference", summary.reference}, {"reference_level", summary.reference_row.substr(summary.reference.size() + 1)},
+    doc["tritri"] = {{"schema", "tritri-bench/1"},         {"reference", summary.reference}, {"reference_level", summary.reference_row.substr(summary.reference.size() + 1)},
                      {"not_timed", untimed},           {"pools", pool_list},
                      {"results", results},             {"harness", harness_json(summary)},
                      {"corpus", corpus_json(corpus)}};

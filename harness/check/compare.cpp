@@ -31,28 +31,58 @@ Json read_json(const std::string& path) {
 
 enum class Kind { check, bench };
 
+// The versions this comparison reads. A check result of another version, or a benchmark file
+// whose tritri section names another, is refused rather than read with its counts as zeros.
+// Plain Google Benchmark JSON (no tritri section) has no version of its own and is read as is.
+// Both are documented with their keys: harness/README.md and harness/bench/README.md.
+constexpr const char* kCheckSchema = "tritri-check/2";
+constexpr const char* kBenchSchema = "tritri-bench/1";
+
+// object[key], or an error naming the file and the key's path (`where` is the path up to it).
+const Json& required(const Json& object, const char* key, const std::string& where, const std::string& path) {
+  if (!object.is_object() || !object.contains(key))
+    throw std::runtime_error(path + ": missing required key " + where + key);
+  return object[key];
+}
+
+void expect_schema(const Json& schema, const char* understood, const std::string& where,
+                   const std::string& path) {
+  if (!schema.is_string() || schema.get<std::string>() != understood)
+    throw std::runtime_error(path + ": " + where + " is " + schema.dump() + "; tritri compare reads " + understood);
+}
+
 Kind kind_of(const Json& doc, const std::string& path) {
   if (doc.is_object() && doc.contains("schema") && doc["schema"].is_string() &&
-      doc["schema"].get<std::string>().rfind("tritri-check/", 0) == 0)
+      doc["schema"].get<std::string>().rfind("tritri-check/", 0) == 0) {
+    expect_schema(doc["schema"], kCheckSchema, "schema", path);
     return Kind::check;
-  if (doc.is_object() && doc.contains("benchmarks") && doc["benchmarks"].is_array()) return Kind::bench;
+  }
+  if (doc.is_object() && doc.contains("benchmarks") && doc["benchmarks"].is_array()) {
+    if (doc.contains("tritri")) expect_schema(required(doc["tritri"], "schema", "tritri.", path), kBenchSchema,
+                                              "tritri.schema", path);
+    return Kind::bench;
+  }
   throw std::runtime_error(path + ": neither a 'tritri check --json' result nor a benchmark result");
 }
 
 // Per benchmark, the time per item of every repetition, in seconds.
-std::map<std::string, std::vector<double>> repetitions(const Json& doc) {
+std::map<std::string, std::vector<double>> repetitions(const Json& doc, const std::string& path) {
   std::map<std::string, std::vector<double>> out;
   static const std::map<std::string, double> kUnit = {{"ns", 1e-9}, {"us", 1e-6}, {"ms", 1e-3}, {"s", 1.0}};
+  std::size_t index = 0;
   for (const auto& b : doc["benchmarks"]) {
+    const std::string where = "benchmarks[" + std::to_string(index++) + "].";
     if (b.value("run_type", "iteration") != "iteration") continue;
     if (b.contains("error_occurred") && b["error_occurred"].get<bool>()) continue;
-    const std::string name = b.value("run_name", b.value("name", ""));
+    const std::string name = b.contains("run_name") ? b["run_name"].get<std::string>()
+                                                    : required(b, "name", where, path).get<std::string>();
     double seconds;
     if (b.contains("items_per_second") && b["items_per_second"].get<double>() > 0) {
       seconds = 1.0 / b["items_per_second"].get<double>();
     } else {
       const auto unit = kUnit.find(b.value("time_unit", "ns"));
-      seconds = b.value("real_time", 0.0) * (unit == kUnit.end() ? 1e-9 : unit->second);
+      const double scale = unit == kUnit.end() ? 1e-9 : unit->second;
+      seconds = required(b, "real_time", where, path).get<double>() * scale;
     }
     out[name].push_back(seconds);
   }
@@ -84,24 +114,28 @@ std::vector<double> u_distribution(std::size_t n, std::size_t m) {
 
 std::string signed_count(long long d) { return d > 0 ? "+" + std::to_string(d) : std::to_string(d); }
 
-bool print_check_comparison(std::ostream& out, const Json& a, const Json& b) {
+bool print_check_comparison(std::ostream& out, const Json& a, const Json& b, const std::string& a_path,
+                            const std::string& b_path) {
   struct Counts {
     long long v[6] = {0, 0, 0, 0, 0, 0};
   };
   static const char* kFields[6] = {"false_positives", "false_negatives", "misclassified",
                                    "unsupported", "crashes", "timeouts"};
   static const char* kShort[6] = {"FP", "FN", "relation", "unsupported", "crash", "timeout"};
-  auto tallies = [](const Json& doc) {
+  auto tallies = [](const Json& doc, const std::string& path) {
     std::map<std::pair<std::string, std::string>, Counts> t;
-    for (const auto& row : doc["tallies"]) {
+    std::size_t index = 0;
+    for (const auto& row : required(doc, "tallies", "", path)) {
+      const std::string where = "tallies[" + std::to_string(index++) + "].";
       Counts c;
-      for (int k = 0; k < 6; ++k)
-        if (row.contains(kFields[k]) && row[kFields[k]].is_number()) c.v[k] = row[kFields[k]].get<long long>();
-      t[{row["algorithm"].get<std::string>(), row["family"].get<std::string>()}] = c;
+      for (int k = 0; k < 6; ++k)  // misclassified is null for an algorithm without the relation level
+        if (const Json& v = required(row, kFields[k], where, path); v.is_number()) c.v[k] = v.get<long long>();
+      t[{required(row, "algorithm", where, path).get<std::string>(),
+         required(row, "family", where, path).get<std::string>()}] = c;
     }
     return t;
   };
-  const auto ta = tallies(a), tb = tallies(b);
+  const auto ta = tallies(a, a_path), tb = tallies(b, b_path);
   bool worse = false;
   out << "correctness: B against A, per algorithm x family (only rows that changed)\n";
   std::size_t changed = 0;
@@ -178,7 +212,7 @@ std::vector<TimeComparison> compare_benchmarks(const std::string& a_path, const 
   const Json a = read_json(a_path), b = read_json(b_path);
   if (kind_of(a, a_path) != Kind::bench) throw std::runtime_error(a_path + ": not a benchmark result");
   if (kind_of(b, b_path) != Kind::bench) throw std::runtime_error(b_path + ": not a benchmark result");
-  const auto ra = repetitions(a), rb = repetitions(b);
+  const auto ra = repetitions(a, a_path), rb = repetitions(b, b_path);
   std::vector<TimeComparison> out;
   for (const auto& [name, times_b] : rb) {
     auto it = ra.find(name);
@@ -205,7 +239,7 @@ bool print_comparison(std::ostream& out, const std::string& a_path, const std::s
   const Json a = read_json(a_path), b = read_json(b_path);
   const Kind ka = kind_of(a, a_path), kb = kind_of(b, b_path);
   if (ka != kb) throw std::runtime_error("cannot compare a check result with a benchmark result");
-  if (ka == Kind::check) return print_check_comparison(out, a, b);
+  if (ka == Kind::check) return print_check_comparison(out, a, b, a_path, b_path);
 
   const auto rows = compare_benchmarks(a_path, b_path, options);
   if (rows.empty()) {

@@ -1,5 +1,6 @@
 // compare: the U test gives the exact p-values one can work out by hand, a known injected
-// slowdown is significant, an unchanged rerun is not, and check results diff per family.
+// slowdown is significant, an unchanged rerun is not, check results diff per family, and a file
+// of a version compare does not read, or without a key it needs, is refused by file and key.
 #include "harness/check/compare.hpp"
 
 #include "cases/util/random.hpp"
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -91,15 +93,32 @@ TEST(CompareBenchmarks, AnInjectedSlowdownIsSignificantAndARerunIsNot) {
   EXPECT_FALSE(print_comparison(same, base, rerun, {}));
 }
 
-std::string check_file(const std::string& name, int false_negatives) {
+// A check result as `tritri check --json` writes it, with the keys compare reads; `edit` may
+// spoil it.
+std::string check_file(const std::string& name, int false_negatives,
+                       const std::function<void(nlohmann::json&)>& edit = {}) {
   nlohmann::json doc = {{"schema", "tritri-check/2"}};
   doc["tallies"] = {{{"algorithm", "moller97"}, {"family", "shared-edge"}, {"cases", 10}, {"false_positives", 0},
-                     {"false_negatives", false_negatives}, {"misclassified", nullptr}, {"unsupported", 0}},
+                     {"false_negatives", false_negatives}, {"misclassified", nullptr}, {"unsupported", 0},
+                     {"crashes", 0}, {"timeouts", 0}},
                     {{"algorithm", "moller97"}, {"family", "random"}, {"cases", 10}, {"false_positives", 1},
-                     {"false_negatives", 0}, {"misclassified", nullptr}, {"unsupported", 0}}};
+                     {"false_negatives", 0}, {"misclassified", nullptr}, {"unsupported", 0}, {"crashes", 0},
+                     {"timeouts", 0}}};
+  if (edit) edit(doc);
   const std::string path = std::string(TRITRI_BINARY_DIR) + "/" + name;
   std::ofstream(path) << doc.dump();
   return path;
+}
+
+// The message print_comparison throws on, or "" when it does not.
+std::string refusal(const std::string& a, const std::string& b) {
+  std::ostringstream out;
+  try {
+    print_comparison(out, a, b, {});
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 TEST(CompareBenchmarks, ASignificantButTinyDriftDoesNotCount) {
@@ -132,6 +151,48 @@ TEST(CompareChecks, RefusesFilesItCannotCompare) {
   const std::string junk = std::string(TRITRI_BINARY_DIR) + "/refuse-junk.json";
   std::ofstream(junk) << "{not json";
   EXPECT_THROW(print_comparison(out, junk, a, {}), std::runtime_error);
+}
+
+TEST(CompareChecks, NamesTheFileAndKeyOfAMissingCount) {
+  const auto good = check_file("key-good.json", 0);
+  const auto renamed = check_file("key-renamed.json", 0, [](nlohmann::json& doc) {
+    doc["tallies"][1]["fn"] = doc["tallies"][1]["false_negatives"];
+    doc["tallies"][1].erase("false_negatives");
+  });
+  EXPECT_EQ(refusal(good, renamed), renamed + ": missing required key tallies[1].false_negatives");
+  const auto no_tallies = check_file("key-no-tallies.json", 0, [](nlohmann::json& doc) { doc.erase("tallies"); });
+  EXPECT_EQ(refusal(no_tallies, good), no_tallies + ": missing required key tallies");
+}
+
+TEST(CompareChecks, RefusesASchemaVersionItDoesNotRead) {
+  const auto good = check_file("version-good.json", 0);
+  const auto newer = check_file("version-3.json", 0, [](nlohmann::json& doc) { doc["schema"] = "tritri-check/3"; });
+  EXPECT_EQ(refusal(good, newer), newer + ": schema is \"tritri-check/3\"; tritri compare reads tritri-check/2");
+}
+
+TEST(CompareBenchmarks, ChecksTheTritriSectionsVersionAndEachBenchmarksTime) {
+  const auto plain = bench_file("plain.json", 1.0, 7);  // Google Benchmark's JSON alone: no version to check
+  EXPECT_EQ(refusal(plain, plain), "");
+  const auto tagged = [&](const std::string& name, const nlohmann::json& tritri) {
+    std::ifstream in(plain);
+    nlohmann::json doc = nlohmann::json::parse(in);
+    doc["tritri"] = tritri;
+    const std::string path = std::string(TRITRI_BINARY_DIR) + "/" + name;
+    std::ofstream(path) << doc.dump();
+    return path;
+  };
+  EXPECT_EQ(refusal(tagged("bench-v1.json", {{"schema", "tritri-bench/1"}}), plain), "");
+  const auto old = tagged("bench-unversioned.json", {{"reference", "moller97"}});
+  EXPECT_EQ(refusal(old, plain), old + ": missing required key tritri.schema");
+  const auto v2 = tagged("bench-v2.json", {{"schema", "tritri-bench/2"}});
+  EXPECT_EQ(refusal(plain, v2), v2 + ": tritri.schema is \"tritri-bench/2\"; tritri compare reads tritri-bench/1");
+  std::ifstream in(plain);
+  nlohmann::json doc = nlohmann::json::parse(in);
+  doc["benchmarks"][2].erase("real_time");
+  doc["benchmarks"][2].erase("items_per_second");
+  const std::string no_time = std::string(TRITRI_BINARY_DIR) + "/bench-no-time.json";
+  std::ofstream(no_time) << doc.dump();
+  EXPECT_EQ(refusal(plain, no_time), no_time + ": missing required key benchmarks[2].real_time");
 }
 
 }  // namespace

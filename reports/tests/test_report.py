@@ -484,6 +484,54 @@ class Reference(unittest.TestCase):
         self.assertEqual(data.relative_to_reference({"relative_to_reference": 2.0}), 2.0)
 
 
+class SchemaChecks(unittest.TestCase):
+    """A file that is there is read only as a version the report knows, with the keys it needs."""
+
+    def load_spoiled(self, name, spoil):
+        from tritri_report import data
+        src = tempfile.mkdtemp()
+        try:
+            doc = load(name)
+            spoil(doc)
+            with open(os.path.join(src, name), "w", encoding="utf-8") as f:
+                json.dump(doc, f)
+            return data.load_results(src), os.path.join(src, name)
+        finally:
+            shutil.rmtree(src)
+
+    def refusal(self, name, spoil):
+        from tritri_report import schema
+        with self.assertRaises(schema.SchemaError) as caught:
+            self.load_spoiled(name, spoil)
+        return str(caught.exception)
+
+    def test_a_renamed_tally_key_is_named_not_read_as_zero(self):
+        def rename(doc):
+            doc["tallies"][2]["fn"] = doc["tallies"][2].pop("false_negatives")
+        message = self.refusal("check.json", rename)
+        self.assertRegex(message, r"check\.json: missing required key tallies\[2\]\.false_negatives$")
+
+    def test_a_version_the_report_does_not_read_is_refused(self):
+        def newer(doc):
+            doc["schema"] = "tritri-check/3"
+        self.assertRegex(self.refusal("check-float.json", newer),
+                         r"check-float\.json: schema 'tritri-check/3'; the report reads tritri-check/2$")
+        self.assertRegex(self.refusal("bench.json", lambda doc: doc["tritri"].pop("schema")),
+                         r"bench\.json: no tritri\.schema; the report reads tritri-bench/1$")
+
+    def test_a_missing_nested_key_is_named_by_its_path(self):
+        def drop(doc):
+            doc["pairs"][0]["families"][1].pop("differ")
+        self.assertRegex(self.refusal("compiler-diff.json", drop),
+                         r"compiler-diff\.json: missing required key pairs\[0\]\.families\[1\]\.differ$")
+
+    def test_every_fixture_file_is_read(self):
+        from tritri_report import data
+        loaded = data.load_results(FIXTURE)
+        self.assertEqual(set(loaded), {role for role, name in data.FILES.items()
+                                       if os.path.exists(os.path.join(FIXTURE, name))})
+
+
 class Sections(unittest.TestCase):
     def test_a_section_is_a_title_and_a_render_function(self):
         import types

@@ -1,7 +1,9 @@
 """Reading a results directory and the arithmetic on its JSON that every section shares.
 
 Every file is optional: a run may stop early, or a component may not exist yet, and a section
-whose input is missing says "not measured in this run" instead of failing.
+whose input is missing says "not measured in this run" instead of failing. A file that is there
+is checked as it is read (schema.py): a version the report does not read, or a missing key, is
+an error naming the file and the key.
 """
 
 import json
@@ -9,7 +11,10 @@ import math
 import os
 from collections import OrderedDict
 
+from . import schema
+
 # The results directory's files, by role. scripts/run writes them; see its --help.
+# A role's kind of file (schema.KINDS) is its name's first word: check_float is a check.
 FILES = {
     "provenance": "provenance.json",
     "manifest": "corpus.json",
@@ -35,25 +40,31 @@ HARNESS_FLOOR = "floor"
 OLD_REFERENCE = "moller97"
 
 
-def load_json(path):
-    """The document at `path`, or None when there is no such file."""
+# The kind of the roles whose name does not start with it.
+_KIND_OF_ROLE = {"symmetry": "check", "sweeps": "check", "sweeps_float": "check", "builtin": "check",
+                 "compiler_diff": "diff", "compiler_bench": "bench"}
+
+
+def load_json(path, kind):
+    """The document at `path`, checked as a `kind` of file (schema.KINDS), or None when there is
+    no such file."""
     if not os.path.exists(path):
         return None
     with open(path, encoding="utf-8") as f:
-        return json.load(f)
+        try:
+            doc = json.load(f)
+        except ValueError as e:
+            raise schema.SchemaError("%s: not valid JSON (%s)" % (path, e)) from None
+    return schema.check(doc, kind, path)
 
 
 def load_results(results_dir):
     data = {}
     for role, name in FILES.items():
-        doc = load_json(os.path.join(results_dir, name))
+        doc = load_json(os.path.join(results_dir, name), _KIND_OF_ROLE.get(role, role.split("_")[0]))
         if doc is not None:
             data[role] = doc
     return data
-
-
-def _int(x):
-    return int(x) if x is not None else 0
 
 
 class Totals:
@@ -67,22 +78,23 @@ class Totals:
         self.has_segment = False
 
     def add(self, t):
-        self.cases += _int(t.get("cases"))
-        self.fp += _int(t.get("false_positives"))
-        self.fn += _int(t.get("false_negatives"))
-        self.unsupported += _int(t.get("unsupported"))
-        self.crashes += _int(t.get("crashes"))
-        self.timeouts += _int(t.get("timeouts"))
-        if t.get("misclassified") is not None:
+        # Every key is there: load_json checked them (schema.KINDS["check"]).
+        self.cases += t["cases"]
+        self.fp += t["false_positives"]
+        self.fn += t["false_negatives"]
+        self.unsupported += t["unsupported"]
+        self.crashes += t["crashes"]
+        self.timeouts += t["timeouts"]
+        if t["misclassified"] is not None:
             self.misclassified = (self.misclassified or 0) + t["misclassified"]
-        seg = t.get("segment")
+        seg = t["segment"]
         if seg:
             self.has_segment = True
-            self.segment_answered += _int(seg.get("answered"))
-            self.segment_measured += _int(seg.get("measured"))
-            self.kind_mismatches += _int(seg.get("kind_mismatches"))
-            self.not_computed += _int(seg.get("not_computed"))
-            m = seg.get("max_error")
+            self.segment_answered += seg["answered"]
+            self.segment_measured += seg["measured"]
+            self.kind_mismatches += seg["kind_mismatches"]
+            self.not_computed += seg["not_computed"]
+            m = seg["max_error"]
             if m is not None:
                 self.segment_max = m if self.segment_max is None else max(self.segment_max, m)
         return self

@@ -16,7 +16,7 @@ import re
 from collections import Counter, OrderedDict
 
 from . import analysis
-from .data import Totals, _int
+from .data import Totals
 
 SYMMETRY_GROUPING = "variant=symmetry,@base"
 IDENTITY = "sym-012-012-ab"  # the symmetry variant that leaves a base case as built
@@ -109,11 +109,11 @@ def group_is_asymmetric(t):
     group's overlap answers differ exactly when some but not all scored variants are wrong;
     relations differ when the confusion cells name more than one answer.
     """
-    cases = _int(t.get("cases"))
-    lost = _int(t.get("crashes")) + _int(t.get("timeouts"))
-    scored = cases - _int(t.get("unsupported")) - lost
-    wrong = _int(t.get("false_positives")) + _int(t.get("false_negatives"))
-    if 0 < lost < cases - _int(t.get("unsupported")):
+    cases = t["cases"]
+    lost = t["crashes"] + t["timeouts"]
+    scored = cases - t["unsupported"] - lost
+    wrong = t["false_positives"] + t["false_negatives"]
+    if 0 < lost < cases - t["unsupported"]:
         return True
     if 0 < wrong < scored:
         return True
@@ -145,7 +145,7 @@ def asymmetry(symmetry_check, floors=()):
         fam = base_family(t["family"])
         row = out.setdefault(a, OrderedDict()).setdefault(fam, [0, 0, 0])
         row[1] += 1
-        row[2] += _int(t.get("cases"))
+        row[2] += t["cases"]
         if group_is_asymmetric(t):
             row[0] += 1
     return out
@@ -154,4 +154,4 @@ def asymmetry(symmetry_check, floors=()):
 def variants_per_base(symmetry_check):
     """Counter {symmetric variants of a base case: base cases with that many}."""
     first = (symmetry_check.get("algorithms") or [{}])[0].get("name")
-    return Counter(_int(t.get("cases")) for t in symmetry_check.get("tallies", []) if t["algorithm"] == first)
+    return Counter(t["cases"] for t in symmetry_check.get("tallies", []) if t["algorithm"] == first)

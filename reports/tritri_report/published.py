@@ -38,7 +38,7 @@ def load(folders):
     out = OrderedDict()
     for folder in folders:
         if folder and folder not in out:
-            doc = data.load_json(os.path.join(ALGORITHMS_DIR, folder, FILE_NAME))
+            doc = data.load_json(os.path.join(ALGORITHMS_DIR, folder, FILE_NAME), "published")
             if doc is not None:
                 out[folder] = doc
     return out

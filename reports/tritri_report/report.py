@@ -30,7 +30,7 @@ class Run:
         self.suites = OrderedDict()  # folder: the check of its named suite
         for folder, doc in self.published.items():
             name = (doc.get("suite") or {}).get("results")
-            suite = data.load_json(os.path.join(results_dir, name)) if name else None
+            suite = data.load_json(os.path.join(results_dir, name), "check") if name else None
             if suite is not None:
                 self.suites[folder] = suite
                 self.files_read.append(name)

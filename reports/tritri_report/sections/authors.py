@@ -21,8 +21,8 @@ EXAMPLES_PER_PORT = 2
 
 
 def render(run, part):
-    diff = data.load_json(os.path.join(run.results_dir, DIFF))
-    bench = data.load_json(os.path.join(run.results_dir, BENCH))
+    diff = data.load_json(os.path.join(run.results_dir, DIFF), "diff")
+    bench = data.load_json(os.path.join(run.results_dir, BENCH), "bench")
     if diff is None and bench is None:
         part.add("Not measured: no --authors-code given. `./scripts/run --authors-code PATH [--tropp FILE]` "
                  "builds the authors' published routines from a jgt-code checkout (scripts/authors-code) "

@@ -134,7 +134,7 @@ def draw_scene(picture, path):
 
 
 def render(run, part):
-    bench = data.load_json(os.path.join(run.results_dir, BENCH))
+    bench = data.load_json(os.path.join(run.results_dir, BENCH), "bench")
     if not bench:
         part.add("The scene workloads of `tritri bench --workload scene`: %s.\n" % NOT_MEASURED)
         return
@@ -168,6 +168,6 @@ def render(run, part):
         rel = part.figure("scenes_time_ratio.png", draw_time_ratio, points)
         part.add("![time against collision ratio](%s)\n" % rel)
     for f in sorted(glob.glob(os.path.join(run.results_dir, "scene-pictures", "*.json"))):
-        pic = data.load_json(f)
+        pic = data.load_json(f, "picture")
         rel = part.figure("scene_%s.png" % pic["scene"], draw_scene, pic)
         part.add("![%s](%s)\n" % (pic["scene"], rel))
