@@ -73,8 +73,7 @@ std::vector<std::pair<std::string, std::string>> build_context() {
   return c;
 }
 
-std::vector<std::pair<std::string, std::string>> run_context(const Options& options, const Planned& planned,
-                                                             const std::string& corpus_hash) {
+RunContext run_context(const Options& options, const Planned& planned, const std::string& corpus_hash) {
   auto c = build_context();
   c.emplace_back("corpus_hash", corpus_hash);
   c.emplace_back("seed", std::to_string(options.seed));

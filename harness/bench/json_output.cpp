@@ -81,11 +81,13 @@ json harness_json(const Summary& summary) {
 
 }  // namespace
 
-void write_json(const std::string& path, const std::string& google_json, const Entries& entries,
-                const std::vector<PlannedPool>& pools, const Summary& summary, const CorpusIdentity& corpus) {
+void write_json(const std::string& path, const std::string& google_json, const RunContext& context,
+                const Entries& entries, const std::vector<PlannedPool>& pools, const Summary& summary,
+                const CorpusIdentity& corpus) {
   std::string text = nan_to_null(google_json);
   json doc = json::parse(text, nullptr, false);
   if (!doc.is_discarded()) {
+    for (const auto& [key, value] : context) doc["context"][key] = value;
     json results = json::array(), pool_list = json::array(), untimed = json::array();
     for (const auto& e : entries.timed) results.push_back(result_json(*e, summary));
     for (const auto& p : pools) pool_list.push_back(pool_json(p.pool));

@@ -49,12 +49,16 @@ void print_tables(const EntryList& timed, const Summary& summary, int repetition
 void print_harness(const Summary& summary, std::ostream& out);
 
 // The JSON context keys of the run: build_context() and the run's provenance.
-std::vector<std::pair<std::string, std::string>> run_context(const Options& options, const Planned& planned,
-                                                             const std::string& corpus_hash);
+using RunContext = std::vector<std::pair<std::string, std::string>>;
+RunContext run_context(const Options& options, const Planned& planned, const std::string& corpus_hash);
 
-// Google Benchmark's JSON (NaN made null) with a "tritri" section of our summaries, written
-// atomically.
-void write_json(const std::string& path, const std::string& google_json, const Entries& entries,
-                const std::vector<PlannedPool>& pools, const Summary& summary, const CorpusIdentity& corpus);
+// Google Benchmark's JSON (NaN made null), its "context" completed with the run's `context`, and a
+// "tritri" section of our summaries, written atomically. The context is added here, not through
+// benchmark::AddCustomContext: that map is process-wide, keeps a key's first value for the rest of
+// the process, and is left dangling by benchmark::Shutdown() (Google Benchmark 1.7), so a second
+// bench in one process (the tests) read freed memory.
+void write_json(const std::string& path, const std::string& google_json, const RunContext& context,
+                const Entries& entries, const std::vector<PlannedPool>& pools, const Summary& summary,
+                const CorpusIdentity& corpus);
 
 }  // namespace tritri::bench
