@@ -24,7 +24,7 @@ std::string overlap_text(const Algorithm& a, const Answers& ans) {
 
 }  // namespace
 
-int run_answer(int argc, char** argv) {
+int cmd_answer(int argc, char** argv) {
   Args args(argc, argv, with({"--algo"}, kRunValuedOptions), kRunFlags);
   if (args.help()) {
     std::cout << "usage: tritri answer --algo NAME [--plugin LIB | --exec COMMAND] FILE...\n\n"

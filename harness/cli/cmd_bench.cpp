@@ -115,7 +115,7 @@ bench::Options options_from(const Args& args) {
 
 }  // namespace
 
-int run_bench(int argc, char** argv) {
+int cmd_bench(int argc, char** argv) {
   Args args(argc, argv,
             with({"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
                   "--json", "--cases", "--reference", "--cache"},

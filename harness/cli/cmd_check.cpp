@@ -219,7 +219,7 @@ constexpr const char* kExitStatus =
 
 }  // namespace
 
-int run_check(int argc, char** argv) {
+int cmd_check(int argc, char** argv) {
   Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures",
                   "--group-by", "--scorecard-bases"},
                  kRunValuedOptions),

@@ -7,7 +7,7 @@
 
 namespace tritri::cli {
 
-int run_compare(int argc, char** argv) {
+int cmd_compare(int argc, char** argv) {
   Args args(argc, argv, {"--alpha", "--min-change"}, {});
   if (args.help()) {
     std::cout << "usage: tritri compare [--alpha P] [--min-change C] A.json B.json\n\n"

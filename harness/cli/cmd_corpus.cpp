@@ -68,7 +68,7 @@ void print_help() {
 
 }  // namespace
 
-int run_corpus(int argc, char** argv) {
+int cmd_corpus(int argc, char** argv) {
   Args args(argc, argv, {"--families", "--per-family", "--seed", "--out"}, {"--quick"});
   if (args.help()) {
     print_help();

@@ -208,7 +208,7 @@ const char* const kDiffHelp =
 
 }  // namespace
 
-int run_diff(int argc, char** argv) {
+int cmd_diff(int argc, char** argv) {
   Args args(argc, argv, with({"--algo", "--pair", "--json", "--examples"}, kRunValuedOptions),
             with({"--oracle"}, kRunFlags));
   if (args.help()) {

@@ -8,7 +8,7 @@
 
 namespace tritri::cli {
 
-int run_label(int argc, char** argv) {
+int cmd_label(int argc, char** argv) {
   Args args(argc, argv, {}, {});
   if (args.help()) {
     std::cout << "usage: tritri label FILE...\n\n"

@@ -7,7 +7,7 @@
 
 namespace tritri::cli {
 
-int run_list(int argc, char** argv) {
+int cmd_list(int argc, char** argv) {
   Args args(argc, argv, kRunValuedOptions, with({"--tsv"}, kRunFlags));
   if (args.help()) {
     std::cout << "usage: tritri list [--tsv]\n\n"

@@ -9,7 +9,7 @@
 
 namespace tritri::cli {
 
-int run_show(int argc, char** argv) {
+int cmd_show(int argc, char** argv) {
   Args args(argc, argv, with({"--algo"}, kRunValuedOptions), kRunFlags);
   if (args.help()) {
     std::cout << "usage: tritri show NAME FILE... [--algo NAME]... [--plugin LIB] [--exec COMMAND]\n\n"

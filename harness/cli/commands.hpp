@@ -19,16 +19,16 @@ inline constexpr int kOk = 0;
 inline constexpr int kFindings = 1;  // e.g. check: new failures against a baseline
 inline constexpr int kUsage = 2;     // bad arguments, unreadable or malformed input
 
-int run_list(int argc, char** argv);
-int run_label(int argc, char** argv);
-int run_answer(int argc, char** argv);
-int run_check(int argc, char** argv);
-int run_show(int argc, char** argv);
-int run_compare(int argc, char** argv);
-int run_diff(int argc, char** argv);  // harness/cli/cmd_diff.cpp: two algorithms' answers, case by case
-int run_corpus(int argc, char** argv);
-int run_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
-int run_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/
+int cmd_list(int argc, char** argv);
+int cmd_label(int argc, char** argv);
+int cmd_answer(int argc, char** argv);
+int cmd_check(int argc, char** argv);
+int cmd_show(int argc, char** argv);
+int cmd_compare(int argc, char** argv);
+int cmd_diff(int argc, char** argv);  // harness/cli/cmd_diff.cpp: two algorithms' answers, case by case
+int cmd_corpus(int argc, char** argv);
+int cmd_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
+int cmd_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/
 
 // Algorithms named by --algo (repeatable, or comma-separated); when none is named, all but the
 // build variants (NAME@v3fma: named explicitly, Algorithm::build). Throws
