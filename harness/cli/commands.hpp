@@ -1,10 +1,26 @@
-// The `tritri` subcommands. Each lives in its own file and is listed once in main.cpp.
+// The `tritri` subcommands. Command NAME lives in harness/cli/cmd_NAME.cpp (which CMake picks up
+// by its name), defines `int cmd_NAME(int argc, char** argv)` and is listed once, in
+// TRITRI_CLI_COMMANDS below: adding a command is that file and one line there.
 #pragma once
 
 #include "tritri/algorithm.hpp"
 
 #include <string>
 #include <vector>
+
+// X(NAME, summary), in the order `tritri --help` lists them. argv excludes the command name; the
+// entry point returns the exit status.
+#define TRITRI_CLI_COMMANDS(X)                                                                                \
+  X(list, "every algorithm with its levels, boundary semantics, tolerance and citation")                      \
+  X(label, "the oracle's record for every case in case files (TSV)")                                          \
+  X(answer, "one algorithm's answers for every case in case files (TSV)")                                     \
+  X(check, "algorithms against the oracle: errors per algorithm and family")                                  \
+  X(show, "one case: coordinates, the oracle's record and every algorithm's answer")                          \
+  X(corpus, "generate and label the singular-configuration corpus (case files per family)")                   \
+  X(bench, "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)")           \
+  X(scene, "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files")                \
+  X(compare, "what changed between two check or bench results (with a U test for times)")                    \
+  X(diff, "where two algorithms answer differently (e.g. a port and its authors' code)")
 
 namespace tritri::cli {
 
@@ -19,16 +35,9 @@ inline constexpr int kOk = 0;
 inline constexpr int kFindings = 1;  // e.g. check: new failures against a baseline
 inline constexpr int kUsage = 2;     // bad arguments, unreadable or malformed input
 
-int cmd_list(int argc, char** argv);
-int cmd_label(int argc, char** argv);
-int cmd_answer(int argc, char** argv);
-int cmd_check(int argc, char** argv);
-int cmd_show(int argc, char** argv);
-int cmd_compare(int argc, char** argv);
-int cmd_diff(int argc, char** argv);  // harness/cli/cmd_diff.cpp: two algorithms' answers, case by case
-int cmd_corpus(int argc, char** argv);
-int cmd_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
-int cmd_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/
+#define TRITRI_CLI_DECLARE(name, summary) int cmd_##name(int argc, char** argv);
+TRITRI_CLI_COMMANDS(TRITRI_CLI_DECLARE)
+#undef TRITRI_CLI_DECLARE
 
 // Algorithms named by --algo (repeatable, or comma-separated); when none is named, all but the
 // build variants (NAME@v3fma: named explicitly, Algorithm::build). Throws

@@ -10,18 +10,9 @@
 namespace tritri::cli {
 namespace {
 
-constexpr Command kCommands[] = {
-    {"list", "every algorithm with its levels, boundary semantics, tolerance and citation", cmd_list},
-    {"label", "the oracle's record for every case in case files (TSV)", cmd_label},
-    {"answer", "one algorithm's answers for every case in case files (TSV)", cmd_answer},
-    {"check", "algorithms against the oracle: errors per algorithm and family", cmd_check},
-    {"show", "one case: coordinates, the oracle's record and every algorithm's answer", cmd_show},
-    {"corpus", "generate and label the singular-configuration corpus (case files per family)", cmd_corpus},
-    {"bench", "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)", cmd_bench},
-    {"scene", "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files", cmd_scene},
-    {"compare", "what changed between two check or bench results (with a U test for times)", cmd_compare},
-    {"diff", "where two algorithms answer differently (e.g. a port and its authors' code)", cmd_diff},
-};
+#define TRITRI_CLI_ROW(name, summary) {#name, summary, cmd_##name},
+constexpr Command kCommands[] = {TRITRI_CLI_COMMANDS(TRITRI_CLI_ROW)};
+#undef TRITRI_CLI_ROW
 
 void print_usage(std::ostream& out) {
   out << "usage: tritri <command> [options] [files]\n\n"
