@@ -1,6 +1,7 @@
 #include "harness/cli/args.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 namespace tritri::cli {
@@ -64,6 +65,31 @@ std::size_t Args::count(const std::string& name, std::size_t fallback) const {
   if (text->empty() || *end != '\0' || errno != 0 || n < 0)
     throw UsageError("option '" + name + "' takes a whole number >= 0, not '" + *text + "'");
   return static_cast<std::size_t>(n);
+}
+
+std::optional<double> Args::seconds(const std::string& name) const {
+  auto text = value(name);
+  if (!text) return std::nullopt;
+  char* end = nullptr;
+  const double s = std::strtod(text->c_str(), &end);
+  if (end == text->c_str() || *end != '\0' || !(s > 0) || !std::isfinite(s))
+    throw UsageError("option '" + name + "' takes a number of seconds > 0, not '" + *text + "'");
+  return s;
+}
+
+std::uint64_t Args::seed(const std::string& name, std::uint64_t fallback) const {
+  auto text = value(name);
+  if (!text) return fallback;
+  std::size_t used = 0;
+  unsigned long long seed = 0;
+  try {
+    seed = std::stoull(*text, &used, 0);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text->size() || (*text)[0] == '-')
+    throw UsageError("option '" + name + "' takes a whole number >= 0 (decimal or 0x hex), not '" + *text + "'");
+  return seed;
 }
 
 }  // namespace tritri::cli

@@ -2,6 +2,7 @@
 // rather than a silently ignored word.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -30,6 +31,10 @@ class Args {
 
   // Reads an option as a non-negative count, with a clear error for anything else.
   std::size_t count(const std::string& name, std::size_t fallback) const;
+  // Reads an option as a number of seconds > 0 (--timeout, --min-time); nullopt when not given.
+  std::optional<double> seconds(const std::string& name) const;
+  // Reads an option as a random seed: a whole number >= 0, decimal or 0x hex.
+  std::uint64_t seed(const std::string& name, std::uint64_t fallback) const;
 
  private:
   std::vector<std::string> positional_;

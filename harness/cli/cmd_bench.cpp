@@ -64,7 +64,10 @@ constexpr const char* kHelp =
     "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
     "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
     "                     process), a pair that makes no progress for S seconds is a timeout\n"
-    "                     (default 2); an algorithm that crashes or hangs on a pool is\n"
+    "                     (default ";
+// kHelp continues, after --timeout's default (IsolationOptions, harness/run/isolation.hpp):
+constexpr const char* kHelpAfterTimeout =
+    "); an algorithm that crashes or hangs on a pool is\n"
     "                     reported with the pair, paste-ready, and not timed on that pool\n"
     "  --no-isolation     check in this process (a crash ends the run)\n\n"
     "  --exec COMMAND     a process plug-in (harness/run/process_plugin.hpp): checked on every\n"
@@ -90,14 +93,10 @@ bench::Options options_from(const Args& args) {
   options.filter = args.value("--filter").value_or("");
   options.pool_size = args.count("--pool", options.pool_size);
   if (options.pool_size == 0) throw UsageError("--pool must be at least 1");
-  options.seed = args.count("--seed", options.seed);
+  options.seed = args.seed("--seed", options.seed);
   options.repetitions = static_cast<int>(args.count("--repetitions", static_cast<std::size_t>(options.repetitions)));
   if (options.repetitions < 1) throw UsageError("--repetitions must be at least 1");
-  if (auto t = args.value("--min-time")) {
-    char* end = nullptr;
-    options.min_time = std::strtod(t->c_str(), &end);
-    if (*end || !(options.min_time > 0)) throw UsageError("--min-time wants a positive number of seconds");
-  }
+  options.min_time = args.seconds("--min-time").value_or(options.min_time);
   options.interleave = !args.flag("--no-interleave");
   options.count_operations = !args.flag("--no-ops");
   options.list_only = args.flag("--list");
@@ -122,7 +121,7 @@ int cmd_bench(int argc, char** argv) {
                  kRunValuedOptions),
             with({"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"}, kRunFlags));
   if (args.help()) {
-    std::cout << kHelp;
+    std::cout << kHelp << format_double(IsolationOptions{}.stall_seconds) << kHelpAfterTimeout;
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");

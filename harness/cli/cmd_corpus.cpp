@@ -13,19 +13,6 @@
 namespace tritri::cli {
 namespace {
 
-std::uint64_t parse_seed(const std::string& text) {
-  std::size_t used = 0;
-  unsigned long long seed = 0;
-  try {
-    seed = std::stoull(text, &used, 0);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || text[0] == '-')
-    throw UsageError("--seed needs a non-negative integer, not '" + text + "'");
-  return seed;
-}
-
 std::vector<std::string> split_commas(const std::vector<std::string>& lists) {
   std::vector<std::string> names;
   for (const auto& list : lists) {
@@ -76,7 +63,7 @@ int cmd_corpus(int argc, char** argv) {
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional()[0] + "'");
   const bool quick = args.flag("--quick");
-  const std::uint64_t seed = args.value("--seed") ? parse_seed(*args.value("--seed")) : 1;
+  const std::uint64_t seed = args.seed("--seed", corpus::CorpusOptions{}.seed);
   corpus::CorpusOptions options = quick ? corpus::quick_options(seed) : corpus::default_options(seed);
   options.per_family = args.count("--per-family", options.per_family);
   options.families = split_commas(args.values("--families"));

@@ -63,7 +63,7 @@ std::string segment_text(const SegmentAnswer& s);  // "-", "empty", "x,y,z", "x,
 // --exec COMMAND with --exec-name NAME) and how they are run (--timeout S, --no-isolation).
 extern const std::set<std::string> kRunValuedOptions;
 extern const std::set<std::string> kRunFlags;
-extern const char* const kRunOptionsHelp;
+extern const std::string kRunOptionsHelp;
 // Loads the --plugin libraries and starts the --exec commands, adding them to the registry.
 void load_external_algorithms(const Args& args);
 IsolationOptions isolation_options(const Args& args);
