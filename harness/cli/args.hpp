@@ -17,14 +17,27 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// What a command accepts. Every command also accepts --help.
+struct OptionSpec {
+  std::set<std::string> valued;  // one value per flag: --json OUT or --json=OUT; repeatable, values() has all
+  std::set<std::string> lists;   // a list, in any mix of the forms kListsHelp gives
+  std::set<std::string> word_lists;  // a list whose items may hold commas (--group-by KEY,KEY): not split
+  std::set<std::string> flags;       // no value
+  bool operands = true;  // the command takes operands (files): a list then takes one word per flag
+};
+
+OptionSpec merged(OptionSpec a, const OptionSpec& b);
+
+// The one description of list options, printed in the --help of every command that has one.
+extern const char* const kListsHelp;
+
 class Args {
  public:
-  // `valued`: options that take a value (--algo NAME or --algo=NAME); `flags`: options that do
-  // not. Every command also accepts --help.
-  Args(int argc, char** argv, const std::set<std::string>& valued, const std::set<std::string>& flags);
+  Args(int argc, char** argv, const OptionSpec& spec);
 
   bool help() const { return flag("--help"); }
   bool flag(const std::string& name) const { return flags_.count(name) > 0; }
+  // Every value given, in order; a list option's items one by one.
   std::vector<std::string> values(const std::string& name) const;
   std::optional<std::string> value(const std::string& name) const;  // the last one given
   const std::vector<std::string>& positional() const { return positional_; }
@@ -37,6 +50,8 @@ class Args {
   std::uint64_t seed(const std::string& name, std::uint64_t fallback) const;
 
  private:
+  void add_value(const OptionSpec& spec, const std::string& name, const std::string& value);
+
   std::vector<std::string> positional_;
   std::multimap<std::string, std::string> values_;
   std::set<std::string> flags_;

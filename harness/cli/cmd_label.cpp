@@ -9,7 +9,7 @@
 namespace tritri::cli {
 
 int cmd_label(int argc, char** argv) {
-  Args args(argc, argv, {}, {});
+  Args args(argc, argv, {});
   if (args.help()) {
     std::cout << "usage: tritri label FILE...\n\n"
                  "The exact oracle's record for every case, as TSV with a header line:\n"

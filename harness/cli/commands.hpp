@@ -39,7 +39,7 @@ inline constexpr int kUsage = 2;     // bad arguments, unreadable or malformed i
 TRITRI_CLI_COMMANDS(TRITRI_CLI_DECLARE)
 #undef TRITRI_CLI_DECLARE
 
-// Algorithms named by --algo (repeatable, or comma-separated); when none is named, all but the
+// Algorithms named by --algo (Args has split its list); when none is named, all but the
 // build variants (NAME@v3fma: named explicitly, Algorithm::build). Throws
 // UsageError naming an unknown algorithm and listing the known ones.
 std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& names);
@@ -59,18 +59,13 @@ std::vector<Case> load_cases(const std::vector<std::string>& files);
 
 std::string segment_text(const SegmentAnswer& s);  // "-", "empty", "x,y,z", "x,y,z;x,y,z", ...
 
-// The options of every command that runs algorithms: external algorithms (--plugin LIB,
+// The options of every command that runs algorithms: external algorithms (--plugin LIB...,
 // --exec COMMAND with --exec-name NAME) and how they are run (--timeout S, --no-isolation).
-extern const std::set<std::string> kRunValuedOptions;
-extern const std::set<std::string> kRunFlags;
+extern const OptionSpec kRunOptions;
 extern const std::string kRunOptionsHelp;
 // Loads the --plugin libraries and starts the --exec commands, adding them to the registry.
 void load_external_algorithms(const Args& args);
 IsolationOptions isolation_options(const Args& args);
-inline std::set<std::string> with(std::set<std::string> a, const std::set<std::string>& b) {
-  a.insert(b.begin(), b.end());
-  return a;
-}
 std::string vec_text(const Vec3<double>& v);
 
 }  // namespace tritri::cli

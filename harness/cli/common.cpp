@@ -30,11 +30,12 @@ std::vector<Case> load_cases(const std::vector<std::string>& files) {
   return all;
 }
 
-const std::set<std::string> kRunValuedOptions = {"--plugin", "--exec", "--exec-name", "--timeout"};
-const std::set<std::string> kRunFlags = {"--no-isolation"};
+const OptionSpec kRunOptions = {.valued = {"--exec", "--exec-name", "--timeout"},
+                                .lists = {"--plugin"},
+                                .flags = {"--no-isolation"}};
 // The defaults shown are the ones used: IsolationOptions' and ProcessPluginOptions' (harness/run/).
 const std::string kRunOptionsHelp =
-    "  --plugin LIB         also run the algorithm in shared library LIB (C ABI: tritri/plugin.h)\n"
+    "  --plugin LIB...      also run the algorithms in shared libraries LIB (C ABI: tritri/plugin.h)\n"
     "  --exec COMMAND       also run an algorithm in another process over the line protocol\n"
     "                       (harness/run/process_plugin.hpp); correctness only\n"
     "  --exec-name NAME     the name of the --exec algorithm (default: exec, exec2, ...)\n"

@@ -32,21 +32,14 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
       if (a.build.empty()) chosen.push_back(&a);
     return chosen;
   }
-  for (const auto& list : names) {
-    std::size_t start = 0;
-    while (start <= list.size()) {
-      const std::size_t comma = std::min(list.find(',', start), list.size());
-      const std::string name = list.substr(start, comma - start);
-      start = comma + 1;
-      if (name.empty()) continue;
-      const Algorithm* a = registry().find(name);
-      if (!a) {
-        std::string known;
-        for (const auto& k : registry().all()) known += (known.empty() ? "" : ", ") + k.name;
-        throw UsageError("unknown algorithm '" + name + "' (known: " + known + ")");
-      }
-      if (std::find(chosen.begin(), chosen.end(), a) == chosen.end()) chosen.push_back(a);
+  for (const auto& name : names) {
+    const Algorithm* a = registry().find(name);
+    if (!a) {
+      std::string known;
+      for (const auto& k : registry().all()) known += (known.empty() ? "" : ", ") + k.name;
+      throw UsageError("unknown algorithm '" + name + "' (known: " + known + ")");
     }
+    if (std::find(chosen.begin(), chosen.end(), a) == chosen.end()) chosen.push_back(a);
   }
   return chosen;
 }
