@@ -3,6 +3,7 @@
 #include "harness/check/judge.hpp"
 
 #include "harness/run/process_plugin.hpp"
+#include "cases/util/input_error.hpp"
 #include "cases/util/stats.hpp"
 
 #include <algorithm>
@@ -111,8 +112,13 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
   if (algorithm.kind == Algorithm::Kind::process) {
     std::vector<std::string> names;
     for (std::size_t i : index) names.push_back(cases[i].name);
-    const ProcessAnswers got =
-        run_process_plugin({algorithm.process.command, algorithm.process.timeout_seconds}, names, pairs);
+    ProcessAnswers got;
+    try {
+      got = run_process_plugin({algorithm.process.command, algorithm.process.timeout_seconds}, names, pairs);
+    } catch (const std::runtime_error& e) {
+      // The user's command broke the line protocol (or could not be run): their input, not a bug here.
+      throw InputError(e.what());
+    }
     for (std::size_t k = 0; k < index.size(); ++k) {
       answers[index[k]].overlap = got.overlap[k];
       answers[index[k]].relation = got.relation[k];

@@ -1,4 +1,5 @@
 #include "harness/check/check_output.hpp"
+#include "cases/util/input_error.hpp"
 
 #include "harness/check/baseline_file.hpp"
 
@@ -263,7 +264,7 @@ Baseline read_baseline(const std::string& path) {
     if (line.empty() || line[0] == '#') continue;
     auto fields = split_fields(line, '\t');
     if (fields.size() != 5)
-      throw std::runtime_error(path + ":" + std::to_string(number) + ": expected 5 tab-separated fields "
+      throw InputError(path + ":" + std::to_string(number) + ": expected 5 tab-separated fields "
                                "(algorithm case level answer oracle), found " +
                                std::to_string(fields.size()));
     if (fields[0] == "algorithm" && fields[1] == "case") continue;  // header

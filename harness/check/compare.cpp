@@ -1,4 +1,5 @@
 #include "harness/check/compare.hpp"
+#include "cases/util/input_error.hpp"
 
 #include "cases/util/stats.hpp"
 
@@ -21,11 +22,11 @@ using Json = nlohmann::json;
 
 Json read_json(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open for reading");
+  if (!in) throw InputError(path + ": cannot open for reading");
   try {
     return Json::parse(in);
   } catch (const std::exception& e) {
-    throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
+    throw InputError(path + ": not valid JSON (" + e.what() + ")");
   }
 }
 
@@ -36,7 +37,7 @@ Kind kind_of(const Json& doc, const std::string& path) {
       doc["schema"].get<std::string>().rfind("tritri-check/", 0) == 0)
     return Kind::check;
   if (doc.is_object() && doc.contains("benchmarks") && doc["benchmarks"].is_array()) return Kind::bench;
-  throw std::runtime_error(path + ": neither a 'tritri check --json' result nor a benchmark result");
+  throw InputError(path + ": neither a 'tritri check --json' result nor a benchmark result");
 }
 
 // Per benchmark, the time per item of every repetition, in seconds.
@@ -176,8 +177,8 @@ UTest mann_whitney(const std::vector<double>& a, const std::vector<double>& b) {
 std::vector<TimeComparison> compare_benchmarks(const std::string& a_path, const std::string& b_path,
                                                const CompareOptions& options) {
   const Json a = read_json(a_path), b = read_json(b_path);
-  if (kind_of(a, a_path) != Kind::bench) throw std::runtime_error(a_path + ": not a benchmark result");
-  if (kind_of(b, b_path) != Kind::bench) throw std::runtime_error(b_path + ": not a benchmark result");
+  if (kind_of(a, a_path) != Kind::bench) throw InputError(a_path + ": not a benchmark result");
+  if (kind_of(b, b_path) != Kind::bench) throw InputError(b_path + ": not a benchmark result");
   const auto ra = repetitions(a), rb = repetitions(b);
   std::vector<TimeComparison> out;
   for (const auto& [name, times_b] : rb) {
@@ -204,7 +205,7 @@ bool print_comparison(std::ostream& out, const std::string& a_path, const std::s
                       const CompareOptions& options) {
   const Json a = read_json(a_path), b = read_json(b_path);
   const Kind ka = kind_of(a, a_path), kb = kind_of(b, b_path);
-  if (ka != kb) throw std::runtime_error("cannot compare a check result with a benchmark result");
+  if (ka != kb) throw InputError("cannot compare a check result with a benchmark result");
   if (ka == Kind::check) return print_check_comparison(out, a, b);
 
   const auto rows = compare_benchmarks(a_path, b_path, options);

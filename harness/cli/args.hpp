@@ -2,6 +2,8 @@
 // rather than a silently ignored word.
 #pragma once
 
+#include "cases/util/input_error.hpp"
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -12,17 +14,18 @@
 
 namespace tritri::cli {
 
-// A usage error: printed with the command's name and a pointer to --help; exit status 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+// A usage error: printed with the command's name and a pointer to --help; exit status 2, as for
+// every InputError.
+struct UsageError : InputError {
+  using InputError::InputError;
 };
 
 // What a command accepts. Every command also accepts --help.
 struct OptionSpec {
-  std::set<std::string> valued;  // one value per flag: --json OUT or --json=OUT; repeatable, values() has all
-  std::set<std::string> lists;   // a list, in any mix of the forms kListsHelp gives
-  std::set<std::string> word_lists;  // a list whose items may hold commas (--group-by KEY,KEY): not split
-  std::set<std::string> flags;       // no value
+  std::set<std::string> valued = {};  // one value per flag: --json OUT or --json=OUT; repeatable, values() has all
+  std::set<std::string> lists = {};   // a list, in any mix of the forms kListsHelp gives
+  std::set<std::string> word_lists = {};  // a list whose items may hold commas (--group-by KEY,KEY): not split
+  std::set<std::string> flags = {};       // no value
   bool operands = true;  // the command takes operands (files): a list then takes one word per flag
 };
 

@@ -5,6 +5,7 @@
 
 #include "tritri/algorithm.hpp"
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,15 @@ struct Command {
 // Exit statuses shared by every command.
 inline constexpr int kOk = 0;
 inline constexpr int kFindings = 1;  // e.g. check: new failures against a baseline
-inline constexpr int kUsage = 2;     // bad arguments, unreadable or malformed input
+inline constexpr int kUsage = 2;     // the user's arguments or input: InputError (and UsageError)
+inline constexpr int kInternal = 3;  // any other exception: a bug in tritri
+// What `tritri --help` and the README say about them.
+extern const char* const kExitStatusHelp;
+
+// Runs one command, turning what it throws into its exit status and a message on `err`: an
+// InputError names the user's mistake (2); anything else is reported as a bug in tritri with the
+// command line that met it (3).
+int run_command(const Command& command, int argc, char** argv, std::ostream& err);
 
 #define TRITRI_CLI_DECLARE(name, summary) int cmd_##name(int argc, char** argv);
 TRITRI_CLI_COMMANDS(TRITRI_CLI_DECLARE)

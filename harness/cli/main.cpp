@@ -1,10 +1,8 @@
 // tritri: the reference test-suite and benchmark harness for 3-D triangle–triangle tests.
 #include "harness/cli/args.hpp"
-#include "cases/casefile.hpp"
 #include "harness/cli/commands.hpp"
 
 #include <cstring>
-#include <exception>
 #include <iostream>
 
 namespace tritri::cli {
@@ -19,8 +17,7 @@ void print_usage(std::ostream& out) {
          "tritri checks 3-D triangle-triangle intersection tests against an exact oracle (CGAL)\n"
          "and times them. Commands:\n";
   for (const auto& c : kCommands) out << "  " << c.name << std::string(10 - std::strlen(c.name), ' ') << c.summary << '\n';
-  out << "\n'tritri <command> --help' describes a command. Exit status: 0 ok, 1 findings (e.g. new\n"
-         "failures against a baseline), 2 bad arguments or input.\n";
+  out << "\n'tritri <command> --help' describes a command.\n" << kExitStatusHelp;
 }
 
 }  // namespace
@@ -54,19 +51,7 @@ int main(int argc, char** argv) {
   }
   for (const auto& command : kCommands) {
     if (std::strcmp(argv[1], command.name) != 0) continue;
-    try {
-      return command.run(argc - 2, argv + 2);
-    } catch (const UsageError& e) {
-      std::cerr << "tritri " << command.name << ": " << e.what() << "\n(see 'tritri " << command.name
-                << " --help')\n";
-      return kUsage;
-    } catch (const tritri::CaseFileError& e) {
-      std::cerr << "tritri " << command.name << ": " << e.what() << '\n';
-      return kUsage;
-    } catch (const std::exception& e) {
-      std::cerr << "tritri " << command.name << ": " << e.what() << '\n';
-      return kUsage;
-    }
+    return run_command(command, argc - 2, argv + 2, std::cerr);
   }
   std::cerr << "tritri: unknown command '" << argv[1] << "'\n\n";
   print_usage(std::cerr);
