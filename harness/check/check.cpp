@@ -209,9 +209,9 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
   return tally;
 }
 
-void note_family(CheckResult& result, const std::string& family) {
-  if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
-    result.families.push_back(family);
+void note_group(CheckResult& result, const std::string& group) {
+  if (std::find(result.groups.begin(), result.groups.end(), group) == result.groups.end())
+    result.groups.push_back(group);
 }
 
 }  // namespace
@@ -240,9 +240,9 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            CheckResult& result) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Tally one = score_case(algorithm, i, cases[i], oracle[i], answers[i], result.failures);
-    for (const std::string& family : groups_of(cases[i], result.groupings)) {
-      const auto [tally, first] = result.tallies.try_emplace({algorithm.name, family});
-      if (first) note_family(result, family);
+    for (const std::string& group : groups_of(cases[i], result.groupings)) {
+      const auto [tally, first] = result.tallies.try_emplace({algorithm.name, group});
+      if (first) note_group(result, group);
       add_tally(tally->second, one);
     }
   }
@@ -255,7 +255,7 @@ CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std
   result.algorithms = algorithms;
   result.groupings = groupings;
   for (const auto& c : cases)
-    for (const std::string& family : groups_of(c, groupings)) note_family(result, family);
+    for (const std::string& group : groups_of(c, groupings)) note_group(result, group);
   for (const Algorithm* algorithm : algorithms)
     score(*algorithm, cases, oracle, answer_cases(*algorithm, cases, isolation), result);
   return result;

@@ -48,7 +48,7 @@ TEST(Grouping, CountsACaseOnceInEachOfItsGroups) {
   yes.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&always_yes>);
   const CheckResult by_family = run_check({&yes}, c, oracle);
   const CheckResult grouped = run_check({&yes}, c, oracle, {}, {parse_grouping("variant"), parse_grouping("tilt")});
-  EXPECT_EQ(grouped.families,
+  EXPECT_EQ(grouped.groups,
             (std::vector<std::string>{"variant=symmetry", "tilt=2^-3", "variant=scale"}));
   const Tally& all = by_family.tallies.at({"yes", "fam"});
   const Tally& sym = grouped.tallies.at({"yes", "variant=symmetry"});
