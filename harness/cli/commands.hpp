@@ -49,7 +49,7 @@ TRITRI_CLI_COMMANDS(TRITRI_CLI_DECLARE)
 #undef TRITRI_CLI_DECLARE
 
 // Algorithms named by --algo (Args has split its list); when none is named, all but the
-// build variants (NAME@v3fma: named explicitly, Algorithm::build). Throws
+// other builds (NAME@v3fma: run when named, Algorithm::build). Throws
 // UsageError naming an unknown algorithm and listing the known ones.
 std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& names);
 
