@@ -89,7 +89,7 @@ struct CheckResult {
   std::vector<const Algorithm*> algorithms;
   std::vector<Grouping> groupings;    // none: tallied per family (grouping.hpp)
   // The groups tallied, in order of first appearance: each case's family without groupings
-  // (groups_of, grouping.hpp), else the label groups ("variant=scale tilt=2^-30").
+  // (groups_of, grouping.hpp), else the label groups ("subsuite=scale tilt=2^-30").
   std::vector<std::string> groups;
   std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, group)
   std::vector<Failure> failures;

@@ -37,7 +37,7 @@ nlohmann::json algorithm_json(const Algorithm& a) {
           {"folder", a.folder}};
 }
 
-// The groupings as they were given on the command line: "variant=symmetry,@base".
+// The groupings as they were given on the command line: "subsuite=symmetry,@base".
 std::string grouping_text(const Grouping& g) {
   std::string text;
   for (const auto& [key, value] : g.keys) text += (text.empty() ? "" : ",") + key + (value ? "=" + *value : "");

@@ -195,7 +195,7 @@ constexpr const char* kUsageText =
     "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
     "                       the cases with that value; @base is the case's name up to its\n"
     "                       last '.' (the base construction of a corpus variant). E.g.\n"
-    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n"
+    "                       --group-by subsuite=symmetry,@base --group-by subsuite,tilt\n"
     "  --scorecard          also compute each algorithm's robustness scorecard (JSON\n"
     "                       \"scorecards\", schema in harness/README.md) and print it: on base\n"
     "                       cases of the input (cases that are no variant, or the identity\n"
