@@ -43,7 +43,7 @@ double parse_coordinate(std::string_view token, int index, const std::string& fi
 }  // namespace
 
 CaseFileError::CaseFileError(std::string file, int line, std::string problem)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + problem),
+    : InputError(file + ":" + std::to_string(line) + ": " + problem),
       file_(std::move(file)),
       line_(line),
       problem_(std::move(problem)) {}

@@ -12,6 +12,8 @@
 
 #include "tritri/geometry.hpp"
 
+#include "cases/util/input_error.hpp"
+
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -35,7 +37,7 @@ struct Case {
   std::string family() const;
 };
 
-class CaseFileError : public std::runtime_error {
+class CaseFileError : public InputError {
  public:
   CaseFileError(std::string file, int line, std::string problem);
   const std::string& file() const { return file_; }

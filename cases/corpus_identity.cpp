@@ -1,4 +1,5 @@
 #include "cases/corpus_identity.hpp"
+#include "cases/util/input_error.hpp"
 
 #include "cases/util/random.hpp"
 #include "cases/util/text.hpp"
@@ -13,10 +14,10 @@ namespace {
 
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw std::runtime_error(path + ": cannot read");
+  if (!in) throw InputError(path + ": cannot read");
   std::string data(static_cast<std::size_t>(in.tellg()), '\0');
   in.seekg(0);
-  if (!in.read(data.data(), static_cast<std::streamsize>(data.size()))) throw std::runtime_error(path + ": read failed");
+  if (!in.read(data.data(), static_cast<std::streamsize>(data.size()))) throw InputError(path + ": read failed");
   return data;
 }
 

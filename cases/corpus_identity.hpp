@@ -23,7 +23,7 @@ struct CorpusIdentity {
   std::string generated_by;  // the command every file names, "" when they differ or none does
 };
 
-// Reads each file once. Throws std::runtime_error naming the file it cannot read.
+// Reads each file once. Throws InputError naming the file it cannot read.
 CorpusIdentity identify_corpus(const std::vector<std::string>& paths);
 
 }  // namespace tritri

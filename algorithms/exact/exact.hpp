@@ -1,4 +1,4 @@
-// exactsimd: an exact triangle–triangle overlap and relation test for tritri, decided from
+// exact: an exact triangle–triangle overlap and relation test for tritri, decided from
 // orientation signs in SIMD lanes of pairs, with semi-static error bounds and an exact second pass.
 //
 //   Exact      for every finite double input the answers are the oracle's (CGAL Epeck, as
@@ -30,7 +30,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace tritri::exactsimd {
+namespace tritri::exact {
 
 // The batch kernels load a pair as 18 consecutive doubles (kernel.inc).
 static_assert(sizeof(TrianglePair) == 18 * sizeof(double), "TrianglePair must be 18 packed doubles");
@@ -49,7 +49,7 @@ inline const char* to_string(Isa isa) {
 
 // The widest instruction set this machine runs.
 inline Isa detected_isa() {
-#if EXACTSIMD_X86
+#if TRITRI_EXACT_X86
   static const Isa isa = [] {
     __builtin_cpu_init();
     if (__builtin_cpu_supports("avx512f")) return Isa::avx512;
@@ -62,12 +62,12 @@ inline Isa detected_isa() {
 #endif
 }
 
-// The instruction set the batch entry points use: the detected one, or EXACTSIMD_ISA
+// The instruction set the batch entry points use: the detected one, or TRITRI_EXACT_ISA
 // (scalar, sse2, avx2, avx512) when set to one this machine supports.
 inline Isa active_isa() {
   static const Isa isa = [] {
     const Isa best = detected_isa();
-    if (const char* env = std::getenv("EXACTSIMD_ISA")) {
+    if (const char* env = std::getenv("TRITRI_EXACT_ISA")) {
       for (Isa i : {Isa::scalar, Isa::sse2, Isa::avx2, Isa::avx512})
         if (std::strcmp(env, to_string(i)) == 0 && static_cast<int>(i) <= static_cast<int>(best)) return i;
     }
@@ -136,7 +136,7 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
   std::uint32_t pending[kChunk], rest[kChunk];
   stats().pairs += n;
   int lanes = 0;  // scalar: every pair goes to the exact pass
-#if EXACTSIMD_X86
+#if TRITRI_EXACT_X86
   if (isa == Isa::sse2) lanes = isa_sse2::I::W;
   if (isa == Isa::avx2) lanes = isa_avx2::I::W;
   if (isa == Isa::avx512) lanes = isa_avx512::I::W;
@@ -145,7 +145,7 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
     const std::size_t m = n - start < kChunk ? n - start : kChunk;
     const std::size_t simd = lanes ? m - m % static_cast<std::size_t>(lanes) : 0;
     std::size_t np = 0;
-#if EXACTSIMD_X86
+#if TRITRI_EXACT_X86
     switch (isa) {
       case Isa::sse2: np = isa_sse2::run<kRelation>(pairs + start, simd, out + start, pending, 0, 0); break;
       case Isa::avx2: np = isa_avx2::run<kRelation>(pairs + start, simd, out + start, pending, 0, 0); break;
@@ -156,7 +156,7 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
     for (std::size_t j = simd; j < m; ++j) pending[np++] = static_cast<std::uint32_t>(j);
     stats().pending += np;
     std::size_t nr = np;
-#if EXACTSIMD_X86
+#if TRITRI_EXACT_X86
     switch (isa) {
       case Isa::sse2: nr = isa_sse2::run2<kRelation>(pairs + start, out + start, pending, np, rest); break;
       case Isa::avx2: nr = isa_avx2::run2<kRelation>(pairs + start, out + start, pending, np, rest); break;
@@ -188,4 +188,4 @@ inline void relation_batch(const TrianglePair* pairs, std::size_t n, RelationAns
   relation_batch_with(active_isa(), pairs, n, out);
 }
 
-}  // namespace tritri::exactsimd
+}  // namespace tritri::exact

@@ -145,7 +145,7 @@ TEST(Corpus, DifferentSeedsGiveDifferentPerturbedCases) {
   for (const auto& c : other) by_name[c.name] = &c;
   std::size_t perturbed = 0, same = 0;
   for (const auto& c : quick_corpus()) {
-    if (c.label("variant") != std::optional<std::string_view>("perturb")) continue;
+    if (c.label("subsuite") != std::optional<std::string_view>("perturb")) continue;
     ++perturbed;
     const auto it = by_name.find(c.name);
     ASSERT_NE(it, by_name.end()) << c.name;
@@ -160,7 +160,7 @@ TEST(Corpus, NamesAreUniqueAndEveryCaseHasAFamilyAndAVariant) {
   for (const auto& c : quick_corpus()) {
     EXPECT_TRUE(names.insert(c.name).second) << "duplicate name " << c.name;
     EXPECT_TRUE(c.label("family") && find_family(*c.label("family"))) << c.name;
-    EXPECT_TRUE(c.label("variant")) << c.name;
+    EXPECT_TRUE(c.label("subsuite")) << c.name;
   }
   EXPECT_GT(quick_corpus().size(), 2000u);
   EXPECT_LT(quick_corpus().size(), 8000u);

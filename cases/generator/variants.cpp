@@ -28,7 +28,7 @@ Case variant_of(const Case& base, const std::string& suffix, const char* variant
   c.pair = base.pair;
   for (const auto& [k, v] : base.labels)
     if (exact || k != "expect") c.labels.emplace_back(k, v);
-  c.set_label("variant", variant);
+  c.set_label("subsuite", variant);
   c.set_label("transform", transform);
   return c;
 }

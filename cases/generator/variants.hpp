@@ -1,4 +1,4 @@
-// The transformation sub-suites (the variant= label). Each takes a base case and appends its
+// The transformation sub-suites (the subsuite= label). Each takes a base case and appends its
 // transformed copies. Exact transformations keep expect=; rounding ones drop it, since the
 // oracle alone knows the truth of the rounded input.
 #pragma once

@@ -324,7 +324,7 @@ void add_polygon(const std::vector<std::size_t>& f, std::size_t j, std::size_t l
 }  // namespace
 
 MeshError::MeshError(std::string file_, std::size_t line_, const std::string& msg)
-    : std::runtime_error(format_message(file_, line_, msg)), file(std::move(file_)), line(line_) {}
+    : InputError(format_message(file_, line_, msg)), file(std::move(file_)), line(line_) {}
 
 Mesh read_mesh(const std::string& path, const ReadOptions& options, ReadReport* report) {
   ReadReport rep;

@@ -10,6 +10,8 @@
 //     (repeated corner, or three exactly collinear corners: refuse, drop, or keep).
 #pragma once
 
+#include "cases/util/input_error.hpp"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -20,7 +22,7 @@ namespace tritri::scenes {
 
 // Thrown for every problem with a file. what() reads "FILE:LINE: message" when the line is known,
 // "FILE: message" otherwise.
-struct MeshError : std::runtime_error {
+struct MeshError : InputError {
   std::string file;
   std::size_t line;  // 1-based; 0 when unknown (binary formats, or CGAL failed somewhere we could not find)
   MeshError(std::string file_, std::size_t line_, const std::string& msg);

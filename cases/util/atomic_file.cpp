@@ -1,4 +1,5 @@
 #include "cases/util/atomic_file.hpp"
+#include "cases/util/input_error.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -43,7 +44,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
   TemporaryGuard guard(temporary);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+    if (!out) throw InputError("cannot write '" + path + "': " + std::strerror(errno));
     try {
       fill(out);
     } catch (...) {
@@ -55,14 +56,14 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     if (!out) {
       out.close();
       std::remove(temporary.c_str());
-      throw std::runtime_error("error while writing '" + path + "'");
+      throw InputError("error while writing '" + path + "'");
     }
   }
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
     std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + error.message());
+    throw InputError("cannot write '" + path + "': " + error.message());
   }
 }
 

@@ -8,7 +8,7 @@
 namespace tritri {
 
 // Writes through `fill` into a temporary file beside `path`, then renames it over `path`.
-// Throws std::runtime_error naming the path if it cannot be written.
+// Throws InputError (cases/util/input_error.hpp) naming the path if it cannot be written.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& fill);
 
 }  // namespace tritri

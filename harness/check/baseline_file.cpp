@@ -1,4 +1,5 @@
 #include "harness/check/baseline_file.hpp"
+#include "cases/util/input_error.hpp"
 
 #include "cases/util/atomic_file.hpp"
 
@@ -35,12 +36,12 @@ std::string gunzip(const std::string& data, const std::string& path) {
     status = inflate(&z, Z_NO_FLUSH);
     if (status != Z_OK && status != Z_STREAM_END) {
       inflateEnd(&z);
-      throw std::runtime_error(path + ": corrupt gzip data (" + (z.msg ? z.msg : "inflate failed") + ")");
+      throw InputError(path + ": corrupt gzip data (" + (z.msg ? z.msg : "inflate failed") + ")");
     }
     out.append(buffer, sizeof buffer - z.avail_out);
     if (status == Z_OK && z.avail_in == 0 && z.avail_out != 0) {
       inflateEnd(&z);
-      throw std::runtime_error(path + ": truncated gzip data");
+      throw InputError(path + ": truncated gzip data");
     }
   }
   inflateEnd(&z);
@@ -67,7 +68,7 @@ std::string gzip(const std::string& data) {
 
 std::string read_possibly_gzipped(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open baseline for reading");
+  if (!in) throw InputError(path + ": cannot open baseline for reading");
   std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const bool gzipped = data.size() >= 2 && static_cast<unsigned char>(data[0]) == 0x1f &&
                        static_cast<unsigned char>(data[1]) == 0x8b;

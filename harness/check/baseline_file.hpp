@@ -11,7 +11,7 @@
 namespace tritri {
 
 // The whole file, decompressed if it starts with the gzip magic bytes (whatever its name), so
-// a reader never guesses from the name. Throws std::runtime_error naming the path.
+// a reader never guesses from the name. Throws InputError naming the path when it is unreadable or malformed.
 std::string read_possibly_gzipped(const std::string& path);
 
 // Writes the baseline atomically: gzip-compressed (deterministically: no time stamp, so

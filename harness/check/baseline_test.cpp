@@ -54,7 +54,7 @@ TEST_P(Baseline, DisagreementsMatchTheRecordedOnes) {
   const Algorithm* algorithm = registry().find(GetParam());
   ASSERT_NE(algorithm, nullptr);
 #if defined(__SANITIZE_ADDRESS__)
-  // Which products a build variant fuses into FMAs is the optimiser's choice: the recorded
+  // Which products a build (NAME@v3fma) fuses into FMAs is the optimiser's choice: the recorded
   // answers are the release build's, and the instrumented build optimises differently.
   if (!algorithm->build.empty()) GTEST_SKIP() << "the " << algorithm->build << " baseline is the release build's";
 #endif

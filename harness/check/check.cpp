@@ -3,6 +3,7 @@
 #include "harness/check/judge.hpp"
 
 #include "harness/run/process_plugin.hpp"
+#include "cases/util/input_error.hpp"
 #include "cases/util/stats.hpp"
 
 #include <algorithm>
@@ -111,8 +112,13 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
   if (algorithm.kind == Algorithm::Kind::process) {
     std::vector<std::string> names;
     for (std::size_t i : index) names.push_back(cases[i].name);
-    const ProcessAnswers got =
-        run_process_plugin({algorithm.process.command, algorithm.process.timeout_seconds}, names, pairs);
+    ProcessAnswers got;
+    try {
+      got = run_process_plugin({algorithm.process.command, algorithm.process.timeout_seconds}, names, pairs);
+    } catch (const std::runtime_error& e) {
+      // The user's command broke the line protocol (or could not be run): their input, not a bug here.
+      throw InputError(e.what());
+    }
     for (std::size_t k = 0; k < index.size(); ++k) {
       answers[index[k]].overlap = got.overlap[k];
       answers[index[k]].relation = got.relation[k];
@@ -203,9 +209,9 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
   return tally;
 }
 
-void note_family(CheckResult& result, const std::string& family) {
-  if (std::find(result.families.begin(), result.families.end(), family) == result.families.end())
-    result.families.push_back(family);
+void note_group(CheckResult& result, const std::string& group) {
+  if (std::find(result.groups.begin(), result.groups.end(), group) == result.groups.end())
+    result.groups.push_back(group);
 }
 
 }  // namespace
@@ -234,9 +240,9 @@ void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            CheckResult& result) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Tally one = score_case(algorithm, i, cases[i], oracle[i], answers[i], result.failures);
-    for (const std::string& family : groups_of(cases[i], result.groupings)) {
-      const auto [tally, first] = result.tallies.try_emplace({algorithm.name, family});
-      if (first) note_family(result, family);
+    for (const std::string& group : groups_of(cases[i], result.groupings)) {
+      const auto [tally, first] = result.tallies.try_emplace({algorithm.name, group});
+      if (first) note_group(result, group);
       add_tally(tally->second, one);
     }
   }
@@ -249,7 +255,7 @@ CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std
   result.algorithms = algorithms;
   result.groupings = groupings;
   for (const auto& c : cases)
-    for (const std::string& family : groups_of(c, groupings)) note_family(result, family);
+    for (const std::string& group : groups_of(c, groupings)) note_group(result, group);
   for (const Algorithm* algorithm : algorithms)
     score(*algorithm, cases, oracle, answer_cases(*algorithm, cases, isolation), result);
   return result;

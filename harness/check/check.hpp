@@ -88,8 +88,10 @@ double pair_size(const TrianglePair& pair);
 struct CheckResult {
   std::vector<const Algorithm*> algorithms;
   std::vector<Grouping> groupings;    // none: tallied per family (grouping.hpp)
-  std::vector<std::string> families;  // families, or groups; in order of first appearance
-  std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, family or group)
+  // The groups tallied, in order of first appearance: each case's family without groupings
+  // (groups_of, grouping.hpp), else the label groups ("subsuite=scale tilt=2^-30").
+  std::vector<std::string> groups;
+  std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, group)
   std::vector<Failure> failures;
 };
 

@@ -1,4 +1,5 @@
 #include "harness/check/check_output.hpp"
+#include "cases/util/input_error.hpp"
 
 #include "harness/check/baseline_file.hpp"
 
@@ -36,7 +37,7 @@ nlohmann::json algorithm_json(const Algorithm& a) {
           {"folder", a.folder}};
 }
 
-// The groupings as they were given on the command line: "variant=symmetry,@base".
+// The groupings as they were given on the command line: "subsuite=symmetry,@base".
 std::string grouping_text(const Grouping& g) {
   std::string text;
   for (const auto& [key, value] : g.keys) text += (text.empty() ? "" : ",") + key + (value ? "=" + *value : "");
@@ -55,9 +56,9 @@ std::string short_number(double x) {
 template <class Row>
 void for_each_tally(const CheckResult& result, Row row) {
   for (const Algorithm* a : result.algorithms)
-    for (const auto& family : result.families) {
-      auto it = result.tallies.find({a->name, family});
-      if (it != result.tallies.end()) row(*a, family, it->second);
+    for (const auto& group : result.groups) {
+      auto it = result.tallies.find({a->name, group});
+      if (it != result.tallies.end()) row(*a, group, it->second);
     }
 }
 
@@ -67,12 +68,12 @@ bool any_answers(const CheckResult& result, Level level) {
                      [level](const Algorithm* a) { return a->answers(level); });
 }
 
-// The widths of the tables' algorithm and family columns: the longest name, at least the header's.
+// The widths of the tables' algorithm and group (family) columns: the longest name, at least the header's.
 std::pair<std::size_t, std::size_t> column_widths(const CheckResult& result) {
-  std::size_t name_width = 9, family_width = 6;
+  std::size_t name_width = 9, group_width = 6;
   for (const Algorithm* a : result.algorithms) name_width = std::max(name_width, a->name.size());
-  for (const auto& f : result.families) family_width = std::max(family_width, f.size());
-  return {name_width, family_width};
+  for (const auto& g : result.groups) group_width = std::max(group_width, g.size());
+  return {name_width, group_width};
 }
 
 }  // namespace
@@ -80,10 +81,10 @@ std::pair<std::size_t, std::size_t> column_widths(const CheckResult& result) {
 void print_confusion(std::ostream& out, const CheckResult& result, bool all_cells) {
   if (!any_answers(result, Level::relation)) return;
   const auto widths = column_widths(result);
-  const std::size_t name_width = widths.first, family_width = widths.second;
+  const std::size_t name_width = widths.first, group_width = widths.second;
   out << "\nrelation confusion (answered->oracle cases; "
       << (all_cells ? "every cell" : "wrong cells only, --confusion for all") << ")\n";
-  for_each_tally(result, [&](const Algorithm& a, const std::string& family, const Tally& t) {
+  for_each_tally(result, [&](const Algorithm& a, const std::string& group, const Tally& t) {
     if (!a.answers(Level::relation)) return;
     std::string cells;
     for (const auto& [key, count] : t.confusion) {
@@ -93,20 +94,20 @@ void print_confusion(std::ostream& out, const CheckResult& result, bool all_cell
     }
     if (cells.empty()) return;
     out << std::left << std::setw(static_cast<int>(name_width)) << a.name << "  "
-        << std::setw(static_cast<int>(family_width)) << family << "  " << cells << '\n';
+        << std::setw(static_cast<int>(group_width)) << group << "  " << cells << '\n';
   });
 }
 
 void print_segment_errors(std::ostream& out, const CheckResult& result) {
   if (!any_answers(result, Level::segment)) return;
   const auto widths = column_widths(result);
-  const std::size_t name_width = widths.first, family_width = widths.second;
+  const std::size_t name_width = widths.first, group_width = widths.second;
   out << "\nsegment error (Hausdorff distance to the exact intersection / pair's bounding-box diagonal)\n";
-  auto row = [&](const std::string& algorithm, const std::string& family, const std::string& answered,
+  auto row = [&](const std::string& algorithm, const std::string& group, const std::string& answered,
                  const std::string& measured, const std::string& median, const std::string& max,
                  const std::string& kind, const std::string& not_computed) {
     out << std::left << std::setw(static_cast<int>(name_width)) << algorithm << "  "
-        << std::setw(static_cast<int>(family_width)) << family << std::right << std::setw(9) << answered
+        << std::setw(static_cast<int>(group_width)) << group << std::right << std::setw(9) << answered
         << std::setw(9) << measured << std::setw(10) << median << std::setw(10) << max << std::setw(15)
         << kind << std::setw(14) << not_computed << '\n';
   };
@@ -114,16 +115,16 @@ void print_segment_errors(std::ostream& out, const CheckResult& result) {
   for (const Algorithm* a : result.algorithms) {
     if (!a->answers(Level::segment)) continue;
     SegmentTally total;
-    for (const auto& family : result.families) {
-      auto it = result.tallies.find({a->name, family});
+    for (const auto& group : result.groups) {
+      auto it = result.tallies.find({a->name, group});
       if (it == result.tallies.end()) continue;
       const SegmentTally& s = it->second.segment;
       add_tally(total, s);
-      row(a->name, family, std::to_string(s.answered), std::to_string(s.errors.size()),
+      row(a->name, group, std::to_string(s.answered), std::to_string(s.errors.size()),
           short_number(s.median_error()), short_number(s.max_error()), std::to_string(s.kind_mismatches),
           std::to_string(s.not_computed));
     }
-    if (result.families.size() > 1)
+    if (result.groups.size() > 1)
       row(a->name, "(all)", std::to_string(total.answered), std::to_string(total.errors.size()),
           short_number(total.median_error()), short_number(total.max_error()),
           std::to_string(total.kind_mismatches), std::to_string(total.not_computed));
@@ -132,28 +133,28 @@ void print_segment_errors(std::ostream& out, const CheckResult& result) {
 
 void print_check_table(std::ostream& out, const CheckResult& result) {
   const auto widths = column_widths(result);
-  const std::size_t name_width = widths.first, family_width = widths.second;
-  auto row = [&](const std::string& algorithm, const std::string& family, const std::string& cases,
+  const std::size_t name_width = widths.first, group_width = widths.second;
+  auto row = [&](const std::string& algorithm, const std::string& group, const std::string& cases,
                  const std::string& fp, const std::string& fn, const std::string& rel,
                  const std::string& unsupported, const std::string& crash, const std::string& timeout) {
     out << std::left << std::setw(static_cast<int>(name_width)) << algorithm << "  "
-        << std::setw(static_cast<int>(family_width)) << family << std::right << std::setw(8) << cases
+        << std::setw(static_cast<int>(group_width)) << group << std::right << std::setw(8) << cases
         << std::setw(7) << fp << std::setw(7) << fn << std::setw(10) << rel << std::setw(13)
         << unsupported << std::setw(7) << crash << std::setw(9) << timeout << '\n';
   };
   row("algorithm", "family", "cases", "FP", "FN", "relation", "unsupported", "crash", "timeout");
   for (const Algorithm* a : result.algorithms) {
     Tally total;
-    for (const auto& family : result.families) {
-      auto it = result.tallies.find({a->name, family});
+    for (const auto& group : result.groups) {
+      auto it = result.tallies.find({a->name, group});
       if (it == result.tallies.end()) continue;
       const Tally& t = it->second;
       add_tally(total, t);
-      row(a->name, family, std::to_string(t.cases), std::to_string(t.false_positives),
+      row(a->name, group, std::to_string(t.cases), std::to_string(t.false_positives),
           std::to_string(t.false_negatives), a->answers(Level::relation) ? std::to_string(t.misclassified) : "-",
           std::to_string(t.unsupported), std::to_string(t.crashes), std::to_string(t.timeouts));
     }
-    if (result.families.size() > 1)
+    if (result.groups.size() > 1)
       row(a->name, "(all)", std::to_string(total.cases), std::to_string(total.false_positives),
           std::to_string(total.false_negatives), a->answers(Level::relation) ? std::to_string(total.misclassified) : "-",
           std::to_string(total.unsupported), std::to_string(total.crashes), std::to_string(total.timeouts));
@@ -202,11 +203,11 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
   for (const Algorithm* a : result.algorithms) doc["algorithms"].push_back(algorithm_json(*a));
   doc["group_by"] = nlohmann::json::array();
   for (const Grouping& g : result.groupings) doc["group_by"].push_back(grouping_text(g));
-  doc["families"] = result.families;
+  doc["families"] = result.groups;  // the key of tritri-check/1; "group_by" says what the names are
   doc["tallies"] = nlohmann::json::array();
   for (const Algorithm* a : result.algorithms)
-    for (const auto& family : result.families) {
-      auto it = result.tallies.find({a->name, family});
+    for (const auto& group : result.groups) {
+      auto it = result.tallies.find({a->name, group});
       if (it == result.tallies.end()) continue;
       const Tally& t = it->second;
       nlohmann::json confusion = nullptr;
@@ -224,7 +225,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
                    {"kind_mismatches", t.segment.kind_mismatches},
                    {"not_computed", t.segment.not_computed}};
       doc["tallies"].push_back({{"algorithm", a->name},
-                                {"family", family},
+                                {"family", group},
                                 {"cases", t.cases},
                                 {"false_positives", t.false_positives},
                                 {"false_negatives", t.false_negatives},
@@ -263,7 +264,7 @@ Baseline read_baseline(const std::string& path) {
     if (line.empty() || line[0] == '#') continue;
     auto fields = split_fields(line, '\t');
     if (fields.size() != 5)
-      throw std::runtime_error(path + ":" + std::to_string(number) + ": expected 5 tab-separated fields "
+      throw InputError(path + ":" + std::to_string(number) + ": expected 5 tab-separated fields "
                                "(algorithm case level answer oracle), found " +
                                std::to_string(fields.size()));
     if (fields[0] == "algorithm" && fields[1] == "case") continue;  // header

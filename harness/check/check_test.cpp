@@ -77,7 +77,7 @@ TEST(Check, TalliesPerFamily) {
   const CheckResult r = run_check({&yes}, cases(), labels());
   EXPECT_EQ(r.tallies.at({"yes", "parallel"}).cases, 5u);
   EXPECT_EQ(r.tallies.at({"yes", "parallel"}).false_positives, 5u);
-  EXPECT_NE(std::find(r.families.begin(), r.families.end(), "coplanar-disjoint"), r.families.end());
+  EXPECT_NE(std::find(r.groups.begin(), r.groups.end(), "coplanar-disjoint"), r.groups.end());
 }
 
 TEST(Check, DegenerateInputIsNotPassedToAlgorithmsThatRefuseIt) {

@@ -1,4 +1,5 @@
 #include "harness/check/compare.hpp"
+#include "cases/util/input_error.hpp"
 
 #include "cases/util/stats.hpp"
 
@@ -21,11 +22,11 @@ using Json = nlohmann::json;
 
 Json read_json(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open for reading");
+  if (!in) throw InputError(path + ": cannot open for reading");
   try {
     return Json::parse(in);
   } catch (const std::exception& e) {
-    throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
+    throw InputError(path + ": not valid JSON (" + e.what() + ")");
   }
 }
 
@@ -41,14 +42,14 @@ constexpr const char* kBenchSchema = "tritri-bench/1";
 // object[key], or an error naming the file and the key's path (`where` is the path up to it).
 const Json& required(const Json& object, const char* key, const std::string& where, const std::string& path) {
   if (!object.is_object() || !object.contains(key))
-    throw std::runtime_error(path + ": missing required key " + where + key);
+    throw InputError(path + ": missing required key " + where + key);
   return object[key];
 }
 
 void expect_schema(const Json& schema, const char* understood, const std::string& where,
                    const std::string& path) {
   if (!schema.is_string() || schema.get<std::string>() != understood)
-    throw std::runtime_error(path + ": " + where + " is " + schema.dump() + "; tritri compare reads " + understood);
+    throw InputError(path + ": " + where + " is " + schema.dump() + "; tritri compare reads " + understood);
 }
 
 Kind kind_of(const Json& doc, const std::string& path) {
@@ -62,7 +63,7 @@ Kind kind_of(const Json& doc, const std::string& path) {
                                               "tritri.schema", path);
     return Kind::bench;
   }
-  throw std::runtime_error(path + ": neither a 'tritri check --json' result nor a benchmark result");
+  throw InputError(path + ": neither a 'tritri check --json' result nor a benchmark result");
 }
 
 // Per benchmark, the time per item of every repetition, in seconds.
@@ -210,8 +211,8 @@ UTest mann_whitney(const std::vector<double>& a, const std::vector<double>& b) {
 std::vector<TimeComparison> compare_benchmarks(const std::string& a_path, const std::string& b_path,
                                                const CompareOptions& options) {
   const Json a = read_json(a_path), b = read_json(b_path);
-  if (kind_of(a, a_path) != Kind::bench) throw std::runtime_error(a_path + ": not a benchmark result");
-  if (kind_of(b, b_path) != Kind::bench) throw std::runtime_error(b_path + ": not a benchmark result");
+  if (kind_of(a, a_path) != Kind::bench) throw InputError(a_path + ": not a benchmark result");
+  if (kind_of(b, b_path) != Kind::bench) throw InputError(b_path + ": not a benchmark result");
   const auto ra = repetitions(a, a_path), rb = repetitions(b, b_path);
   std::vector<TimeComparison> out;
   for (const auto& [name, times_b] : rb) {
@@ -238,7 +239,7 @@ bool print_comparison(std::ostream& out, const std::string& a_path, const std::s
                       const CompareOptions& options) {
   const Json a = read_json(a_path), b = read_json(b_path);
   const Kind ka = kind_of(a, a_path), kb = kind_of(b, b_path);
-  if (ka != kb) throw std::runtime_error("cannot compare a check result with a benchmark result");
+  if (ka != kb) throw InputError("cannot compare a check result with a benchmark result");
   if (ka == Kind::check) return print_check_comparison(out, a, b, a_path, b_path);
 
   const auto rows = compare_benchmarks(a_path, b_path, options);

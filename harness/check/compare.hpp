@@ -40,7 +40,7 @@ struct CompareOptions {
   std::size_t min_repetitions = 3;  // fewer on either side: no test, never significant
 };
 
-// Throws std::runtime_error naming the file if it is not a result tritri can compare.
+// Throws InputError naming the file if it is not a result tritri can compare.
 std::vector<TimeComparison> compare_benchmarks(const std::string& a_path, const std::string& b_path,
                                                const CompareOptions& options);
 

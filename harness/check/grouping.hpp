@@ -15,9 +15,9 @@
 
 namespace tritri {
 
-// One grouping: label keys, each optionally fixed to a value ("variant=symmetry"). A case is in
+// One grouping: label keys, each optionally fixed to a value ("subsuite=symmetry"). A case is in
 // the grouping when it carries every key (with the fixed value, where one is given); its group
-// is named by the keys and the case's values as they read in a case file: "variant=scale
+// is named by the keys and the case's values as they read in a case file: "subsuite=scale
 // tilt=2^-30". The key "@base" stands for the case's name up to its last '.': the corpus names
 // each variant base.suffix, so "@base" gathers the variants of one base construction.
 struct Grouping {

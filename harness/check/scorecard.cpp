@@ -189,8 +189,8 @@ std::string Probe::verdict() const {
 std::vector<Case> scorecard_bases(const std::vector<Case>& cases, const ScorecardOptions& options) {
   std::vector<const Case*> candidates;
   for (const Case& c : cases) {
-    const auto variant = c.label("variant");
-    if (!variant || (*variant == "symmetry" && c.label("transform") == "sym-012-012-ab")) candidates.push_back(&c);
+    const auto subsuite = c.label("subsuite");
+    if (!subsuite || (*subsuite == "symmetry" && c.label("transform") == "sym-012-012-ab")) candidates.push_back(&c);
   }
   std::vector<Case> bases;
   const std::size_t n = candidates.size(), take = std::min(n, options.max_bases);

@@ -52,7 +52,7 @@ struct ScorecardOptions {
   std::uint64_t seed = 1;       // for the scale and translation exponents (tritri::Rng)
 };
 
-// The bases: input cases that are not variants of another (no variant= label, or the identity
+// The bases: input cases that are not variants of another (no subsuite= label, or the identity
 // symmetry), at most options.max_bases of them, evenly spaced.
 std::vector<Case> scorecard_bases(const std::vector<Case>& cases, const ScorecardOptions& options);
 

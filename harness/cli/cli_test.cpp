@@ -128,4 +128,21 @@ TEST(Cli, MalformedInputNamesFileAndLine) {
   EXPECT_NE(r.out.find(path + ":3: coordinate 18 (T2.c.z) 'nan' is NaN"), std::string::npos) << r.out;
 }
 
+// A list option takes several values after one flag where the command has no FILE operands
+// (kListsHelp): the family pools come from both files (axis-aligned is only in yuhe13.cases).
+TEST(Cli, BenchTakesSeveralCaseFilesAfterOneCases) {
+  const std::string yuhe = std::string(TRITRI_SOURCE_DIR) + "/cases/yuhe13.cases";
+  const Outcome r = tritri("bench --quick --list --no-cache --pool 64 --algo moller97 --level overlap --workload family "
+                           "--cases " + kBuiltin + " " + yuhe + " --json -");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("moller97/overlap/family:axis-aligned\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("moller97/overlap/family:edge-on-face\n"), std::string::npos) << r.out;
+}
+
+TEST(Cli, EveryCommandWithAListSaysHowListsAreGiven) {
+  for (const char* command : {"list", "answer", "check", "show", "corpus", "bench", "diff"})
+    EXPECT_NE(tritri(std::string(command) + " --help").out.find("several values after\none flag"), std::string::npos)
+        << command;
+}
+
 }  // namespace

@@ -24,8 +24,8 @@ std::string overlap_text(const Algorithm& a, const Answers& ans) {
 
 }  // namespace
 
-int run_answer(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo"}, kRunValuedOptions), kRunFlags);
+int cmd_answer(int argc, char** argv) {
+  Args args(argc, argv, merged({.lists = {"--algo"}}, kRunOptions));
   if (args.help()) {
     std::cout << "usage: tritri answer --algo NAME [--plugin LIB | --exec COMMAND] FILE...\n\n"
                  "One algorithm's answers for every case, as TSV with a header line:\n"
@@ -38,7 +38,7 @@ int run_answer(int argc, char** argv) {
                  "'-' marks a level the algorithm does not answer. A degenerate case that the\n"
                  "algorithm does not accept is answered 'unsupported' without calling it. A case on\n"
                  "which the algorithm crashed or hung is answered 'crash' or 'timeout' in every column.\n\n"
-              << kRunOptionsHelp;
+              << kRunOptionsHelp << '\n' << kListsHelp;
     return kOk;
   }
   load_external_algorithms(args);

@@ -8,10 +8,10 @@ namespace tritri::cli {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: tritri bench [--quick] [--algo NAME]... [--level L]... [--workload W]...\n"
+    "usage: tritri bench [--quick] [--algo NAME...] [--level L...] [--workload W...]\n"
     "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
     "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
-    "                    [--json OUT] [--cases FILE]... [--list] [--cache DIR] [--no-cache]\n\n"
+    "                    [--json OUT] [--cases FILE...] [--list] [--cache DIR] [--no-cache]\n\n"
     "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
     "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
     "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
@@ -32,12 +32,12 @@ constexpr const char* kHelp =
     "to the reference, the operation counts of the counting instantiations, the harness\n"
     "floor (and the null algorithm) and the repetitions' spread.\n\n"
     "  --quick            CI: pools of 4096 pairs, the CI corpus, 3 repetitions, short runs\n"
-    "  --algo NAME        algorithms to time (repeat, or NAME,NAME); default all but the\n"
+    "  --algo NAME...     algorithms to time; default all but the\n"
     "                     x86-64-v3/FMA builds (NAME@v3fma), which run when named. The\n"
     "                     reference and the floors are always included\n"
-    "  --level L          overlap, relation or segment (repeatable); default all\n"
-    "  --workload W       ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N\n"
-    "                     (repeatable); default ratio, type, family, stage\n"
+    "  --level L...       overlap, relation or segment; default all\n"
+    "  --workload W...    ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N;\n"
+    "                     default ratio, type, family, stage\n"
     "  --reference NAME   every time is also given relative to NAME's overlap level (or its\n"
     "                     first level) on the same pool, in the same run (default moller97);\n"
     "                     the JSON records it and each result's 'relative_to_reference'\n"
@@ -51,7 +51,7 @@ constexpr const char* kHelp =
     "  --json OUT         write Google Benchmark's JSON with tritri's context keys and a\n"
     "                     'tritri' section (reference, pools, medians, ratios, operation\n"
     "                     counts); default tritri-bench.json; '-' for none\n"
-    "  --cases FILE       case files for the family workloads (repeatable), instead of the\n"
+    "  --cases FILE...    case files for the family workloads, instead of the\n"
     "                     corpus generator's families\n"
     "  --list             build the pools, list the benchmarks' names and exit\n"
     "  --cache DIR        keep the labelled pools in DIR and reuse them on the next run with\n"
@@ -61,25 +61,26 @@ constexpr const char* kHelp =
     "                     (tritri, its libraries, the plug-ins) is the same file for file.\n"
     "                     An entry that is stale or corrupt is rebuilt, never trusted\n"
     "  --no-cache         build the pools and check afresh, and keep nothing\n\n"
-    "  --plugin LIB       also time the algorithm in shared library LIB (tritri/plugin.h)\n"
+    "  --plugin LIB...    also time the algorithms in shared libraries LIB (tritri/plugin.h)\n"
     "  --timeout S        when each algorithm is first checked on a pool (in a child\n"
     "                     process), a pair that makes no progress for S seconds is a timeout\n"
-    "                     (default 2); an algorithm that crashes or hangs on a pool is\n"
+    "                     (default ";
+// kHelp continues, after --timeout's default (IsolationOptions, harness/run/isolation.hpp):
+constexpr const char* kHelpAfterTimeout =
+    "); an algorithm that crashes or hangs on a pool is\n"
     "                     reported with the pair, paste-ready, and not timed on that pool\n"
     "  --no-isolation     check in this process (a crash ends the run)\n\n"
     "  --exec COMMAND     a process plug-in (harness/run/process_plugin.hpp): checked on every\n"
     "                     pool and reported, never timed (its answers cross a pipe; on\n"
     "                     the default pools that takes a while). --exec-name NAME names it.\n\n"
     "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments (an unknown\n"
-    "workload or reference among them).\n";
+    "workload or reference among them).\n\n";
 
 // The options the command line asks for, checked.
 bench::Options options_from(const Args& args) {
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
   options.isolation = isolation_options(args);
-  std::vector<std::string> names;
-  for (const auto& v : args.values("--algo")) names.push_back(v);
-  if (!names.empty()) options.algorithms = select_algorithms(names);
+  if (const auto names = args.values("--algo"); !names.empty()) options.algorithms = select_algorithms(names);
   for (const auto& v : args.values("--level")) {
     const auto level = parse_level(v);
     if (!level) throw UsageError("unknown level '" + v + "' (overlap, relation, segment)");
@@ -90,14 +91,10 @@ bench::Options options_from(const Args& args) {
   options.filter = args.value("--filter").value_or("");
   options.pool_size = args.count("--pool", options.pool_size);
   if (options.pool_size == 0) throw UsageError("--pool must be at least 1");
-  options.seed = args.count("--seed", options.seed);
+  options.seed = args.seed("--seed", options.seed);
   options.repetitions = static_cast<int>(args.count("--repetitions", static_cast<std::size_t>(options.repetitions)));
   if (options.repetitions < 1) throw UsageError("--repetitions must be at least 1");
-  if (auto t = args.value("--min-time")) {
-    char* end = nullptr;
-    options.min_time = std::strtod(t->c_str(), &end);
-    if (*end || !(options.min_time > 0)) throw UsageError("--min-time wants a positive number of seconds");
-  }
+  options.min_time = args.seconds("--min-time").value_or(options.min_time);
   options.interleave = !args.flag("--no-interleave");
   options.count_operations = !args.flag("--no-ops");
   options.list_only = args.flag("--list");
@@ -115,14 +112,16 @@ bench::Options options_from(const Args& args) {
 
 }  // namespace
 
-int run_bench(int argc, char** argv) {
+int cmd_bench(int argc, char** argv) {
   Args args(argc, argv,
-            with({"--algo", "--level", "--workload", "--filter", "--pool", "--seed", "--repetitions", "--min-time",
-                  "--json", "--cases", "--reference", "--cache"},
-                 kRunValuedOptions),
-            with({"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"}, kRunFlags));
+            merged({.valued = {"--filter", "--pool", "--seed", "--repetitions", "--min-time", "--json", "--reference",
+                               "--cache"},
+                    .lists = {"--algo", "--level", "--workload", "--cases"},
+                    .flags = {"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"},
+                    .operands = false},
+                   kRunOptions));
   if (args.help()) {
-    std::cout << kHelp;
+    std::cout << kHelp << format_double(IsolationOptions{}.stall_seconds) << kHelpAfterTimeout << kListsHelp;
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");

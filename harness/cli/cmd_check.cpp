@@ -150,11 +150,11 @@ int cross_check_verdict(const CheckResult& result, const std::vector<Case>& case
 }
 
 constexpr const char* kUsageText =
-    "usage: tritri check [--algo NAME]... [--json OUT] [--baseline FILE]...\n"
+    "usage: tritri check [--algo NAME...] [--json OUT] [--baseline FILE...]\n"
     "                    [--write-baseline FILE] [--max-failures N] [--confusion] [--quiet]\n"
-    "                    [--float] [--json-max-failures N] [--group-by KEY[,KEY]...]...\n"
+    "                    [--float] [--json-max-failures N] [--group-by GROUPING...]\n"
     "                    [--scorecard] [--scorecard-bases N]\n"
-    "                    [--plugin LIB]... [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
+    "                    [--plugin LIB...] [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
     "                    [--cross-check] FILE...\n\n"
     "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
     "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
@@ -171,11 +171,11 @@ constexpr const char* kUsageText =
     "answered and the exact point or segment, over the pair's bounding-box diagonal), their\n"
     "median and max, kind mismatches (answered empty/point/segment/area where the exact\n"
     "intersection has another dimension) and coplanar contacts answered without geometry.\n\n"
-    "  --algo NAME          an algorithm to check (repeat, or NAME,NAME); see 'tritri list'.\n"
+    "  --algo NAME...       the algorithms to check; see 'tritri list'.\n"
     "                       Default: all but the x86-64-v3/FMA builds (NAME@v3fma), which run\n"
     "                       when named\n"
     "  --json OUT           also write the results as JSON (schema in harness/README.md)\n"
-    "  --baseline FILE      recorded disagreements (repeatable): exit 1 if any disagreement\n"
+    "  --baseline FILE...   recorded disagreements: exit 1 if any disagreement\n"
     "                       is new; list the recorded ones that no longer occur. Plain TSV,\n"
     "                       or gzip-compressed TSV (recognised by its content)\n"
     "  --write-baseline F   record this run's disagreements as a baseline (gzip-compressed\n"
@@ -189,13 +189,13 @@ constexpr const char* kUsageText =
     "                       each pair is rounded to float inside the call and judged against\n"
     "                       the oracle on the double input); algorithms without one are left\n"
     "                       out. No baseline records these names.\n"
-    "  --group-by KEY[,KEY]...  tally per group of labels instead of per family (repeat for\n"
-    "                       several groupings; a case is counted once in each it is in):\n"
+    "  --group-by GROUPING...  tally per group of labels instead of per family, a GROUPING\n"
+    "                       being KEY[,KEY]... (a case is counted once in each it is in):\n"
     "                       the group is 'KEY=value KEY=value' from the case's labels, and\n"
     "                       cases lacking a KEY are not in the grouping. KEY=VALUE keeps only\n"
     "                       the cases with that value; @base is the case's name up to its\n"
     "                       last '.' (the base construction of a corpus variant). E.g.\n"
-    "                       --group-by variant=symmetry,@base --group-by variant,tilt\n"
+    "                       --group-by subsuite=symmetry,@base --group-by subsuite,tilt\n"
     "  --scorecard          also compute each algorithm's robustness scorecard (JSON\n"
     "                       \"scorecards\", schema in harness/README.md) and print it: on base\n"
     "                       cases of the input (cases that are no variant, or the identity\n"
@@ -219,13 +219,16 @@ constexpr const char* kExitStatus =
 
 }  // namespace
 
-int run_check(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo", "--json", "--baseline", "--write-baseline", "--max-failures", "--json-max-failures",
-                  "--group-by", "--scorecard-bases"},
-                 kRunValuedOptions),
-            with({"--quiet", "--confusion", "--float", "--scorecard", "--cross-check"}, kRunFlags));
+int cmd_check(int argc, char** argv) {
+  Args args(argc, argv,
+            merged({.valued = {"--json", "--write-baseline", "--max-failures", "--json-max-failures",
+                               "--scorecard-bases"},
+                    .lists = {"--algo", "--baseline"},
+                    .word_lists = {"--group-by"},
+                    .flags = {"--quiet", "--confusion", "--float", "--scorecard", "--cross-check"}},
+                   kRunOptions));
   if (args.help()) {
-    std::cout << kUsageText << kRunOptionsHelp << kExitStatus;
+    std::cout << kUsageText << kRunOptionsHelp << '\n' << kListsHelp << kExitStatus;
     return kOk;
   }
   load_external_algorithms(args);

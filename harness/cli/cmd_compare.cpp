@@ -7,8 +7,8 @@
 
 namespace tritri::cli {
 
-int run_compare(int argc, char** argv) {
-  Args args(argc, argv, {"--alpha", "--min-change"}, {});
+int cmd_compare(int argc, char** argv) {
+  Args args(argc, argv, {.valued = {"--alpha", "--min-change"}});
   if (args.help()) {
     std::cout << "usage: tritri compare [--alpha P] [--min-change C] A.json B.json\n\n"
                  "What changed from run A to run B.\n"

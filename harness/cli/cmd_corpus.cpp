@@ -13,73 +13,52 @@
 namespace tritri::cli {
 namespace {
 
-std::uint64_t parse_seed(const std::string& text) {
-  std::size_t used = 0;
-  unsigned long long seed = 0;
-  try {
-    seed = std::stoull(text, &used, 0);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || text[0] == '-')
-    throw UsageError("--seed needs a non-negative integer, not '" + text + "'");
-  return seed;
-}
-
-std::vector<std::string> split_commas(const std::vector<std::string>& lists) {
-  std::vector<std::string> names;
-  for (const auto& list : lists) {
-    std::stringstream in(list);
-    for (std::string name; std::getline(in, name, ',');)
-      if (!name.empty()) names.push_back(name);
-  }
-  return names;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void print_help() {
-  std::cout << "usage: tritri corpus [--quick] [--families NAME,...] [--per-family N] [--seed S]\n"
+  std::cout << "usage: tritri corpus [--quick] [--families NAME...] [--per-family N] [--seed S]\n"
                "                     [--out DIR]\n\n"
                "Generates the singular-configuration corpus, labels every case with the exact oracle,\n"
                "writes one case file per family to DIR/<family>.cases and prints the number of cases\n"
                "per family x oracle relation.\n\n"
                "Each family builds base cases exactly on small-integer or dyadic grids, cycling through\n"
                "its configurations; each base case then gets the transformation sub-suites, named by\n"
-               "the variant= label: symmetry (vertex orders x argument order; 72 per base case by\n"
+               "the subsuite= label: symmetry (vertex orders x argument order; 72 per base case by\n"
                "default), scale (by 2^k, exact), translate (by 2^k offsets, exact), rotate (random,\n"
                "rounded to double) and perturb (T2's first vertex moved by +-delta x the pair's size,\n"
                "delta = 1e-16, 1e-14, ..., 1e-2). The random family gets only symmetry and scale.\n"
-               "Exact cases carry expect=<relation>; all carry family=, config=, variant=,\n"
+               "Exact cases carry expect=<relation>; all carry family=, config=, subsuite=,\n"
                "transform= and oracle=<relation>.\n\n"
                "  --quick            the CI corpus: 10 base cases per family, 6 of the 72 symmetry\n"
                "                     variants, one scale, translation and rotation each (about 4,000)\n"
                "                     instead of 144 base cases with all variants (about 214,000)\n"
-               "  --families LIST    only these families (comma-separated, repeatable); the 16 are:\n";
+               "  --families NAME... only these families; the 16 are:\n";
   for (const auto& f : corpus::families()) std::cout << "                       " << f.name << " - " << f.summary << '\n';
   std::cout << "  --per-family N     base cases per family (default 144, or 10 with --quick)\n"
                "  --seed S           random seed (default 1): the same seed gives the same bytes\n"
                "  --out DIR          where to write (default: corpus, or corpus-quick with --quick)\n\n"
                "Progress goes to stderr on a terminal. Exit status: 0; 1 if the oracle contradicts an\n"
-               "expect= label (a generator bug: the cases are still written); 2 on bad arguments.\n";
+               "expect= label (a generator bug: the cases are still written); 2 on bad arguments.\n\n"
+            << kListsHelp;
 }
 
 }  // namespace
 
-int run_corpus(int argc, char** argv) {
-  Args args(argc, argv, {"--families", "--per-family", "--seed", "--out"}, {"--quick"});
+int cmd_corpus(int argc, char** argv) {
+  Args args(argc, argv,
+            {.valued = {"--per-family", "--seed", "--out"}, .lists = {"--families"}, .flags = {"--quick"}, .operands = false});
   if (args.help()) {
     print_help();
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional()[0] + "'");
   const bool quick = args.flag("--quick");
-  const std::uint64_t seed = args.value("--seed") ? parse_seed(*args.value("--seed")) : 1;
+  const std::uint64_t seed = args.seed("--seed", corpus::CorpusOptions{}.seed);
   corpus::CorpusOptions options = quick ? corpus::quick_options(seed) : corpus::default_options(seed);
   options.per_family = args.count("--per-family", options.per_family);
-  options.families = split_commas(args.values("--families"));
+  options.families = args.values("--families");
   const std::string dir = args.value("--out").value_or(quick ? "corpus-quick" : "corpus");
 
   std::size_t planned = 0;

@@ -185,8 +185,8 @@ std::vector<std::pair<const Algorithm*, const Algorithm*>> chosen_pairs(const Ar
 }
 
 const char* const kDiffHelp =
-    "usage: tritri diff (--algo A --algo B | --pair A=B...) [--oracle] [--json OUT] [--examples N]\n"
-    "                   [--plugin LIB | --exec COMMAND]... FILE...\n\n"
+    "usage: tritri diff (--algo A,B | --pair A=B...) [--oracle] [--json OUT] [--examples N]\n"
+    "                   [--plugin LIB...] [--exec COMMAND]... FILE...\n\n"
     "Where two algorithms answer differently, case by case (only their answers; --oracle also\n"
     "judges the differences).\n"
     "Made for a port against its authors' code (scripts/authors-code builds the originals as\n"
@@ -208,11 +208,12 @@ const char* const kDiffHelp =
 
 }  // namespace
 
-int run_diff(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo", "--pair", "--json", "--examples"}, kRunValuedOptions),
-            with({"--oracle"}, kRunFlags));
+int cmd_diff(int argc, char** argv) {
+  Args args(argc, argv,
+            merged({.valued = {"--json", "--examples"}, .lists = {"--algo", "--pair"}, .flags = {"--oracle"}},
+                   kRunOptions));
   if (args.help()) {
-    std::cout << kDiffHelp << '\n' << kRunOptionsHelp
+    std::cout << kDiffHelp << '\n' << kRunOptionsHelp << '\n' << kListsHelp
               << "\nExit status: 0 when every pair answers alike; 1 when some differ; 2 on bad arguments or input.\n";
     return kOk;
   }

@@ -8,8 +8,8 @@
 
 namespace tritri::cli {
 
-int run_label(int argc, char** argv) {
-  Args args(argc, argv, {}, {});
+int cmd_label(int argc, char** argv) {
+  Args args(argc, argv, {});
   if (args.help()) {
     std::cout << "usage: tritri label FILE...\n\n"
                  "The exact oracle's record for every case, as TSV with a header line:\n"

@@ -7,15 +7,16 @@
 
 namespace tritri::cli {
 
-int run_list(int argc, char** argv) {
-  Args args(argc, argv, kRunValuedOptions, with({"--tsv"}, kRunFlags));
+int cmd_list(int argc, char** argv) {
+  Args args(argc, argv, merged({.flags = {"--tsv"}, .operands = false}, kRunOptions));
   if (args.help()) {
-    std::cout << "usage: tritri list [--tsv]\n\n"
+    std::cout << "usage: tritri list [--tsv] [--plugin LIB...] [--exec COMMAND]...\n\n"
                  "Every built-in algorithm: the answer levels it serves (overlap, relation, segment),\n"
                  "whether touching counts (closed) or not (open), its tolerance (value and the\n"
                  "quantity it is compared with, or none), whether it accepts zero-area triangles,\n"
                  "and its citation. --tsv prints one tab-separated row per algorithm. --plugin LIB and\n"
-                 "--exec COMMAND add external algorithms, as for check.\n";
+                 "--exec COMMAND add external algorithms, as for check.\n\n"
+              << kListsHelp;
     return kOk;
   }
   if (!args.positional().empty()) throw UsageError("list takes no files");

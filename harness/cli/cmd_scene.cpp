@@ -78,8 +78,9 @@ void write_picture(const std::string& path, const std::string& name, const scene
 
 }  // namespace
 
-int run_scene(int argc, char** argv) {
-  Args args(argc, argv, {"--out", "--bv", "--frames", "--mesh", "--picture"}, {"--list", "--small", "--adjacent"});
+int cmd_scene(int argc, char** argv) {
+  Args args(argc, argv,
+            {.valued = {"--out", "--bv", "--frames", "--mesh", "--picture"}, .flags = {"--list", "--small", "--adjacent"}});
   if (args.help()) {
     std::cout << kHelp;
     return kOk;

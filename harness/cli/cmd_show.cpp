@@ -9,14 +9,14 @@
 
 namespace tritri::cli {
 
-int run_show(int argc, char** argv) {
-  Args args(argc, argv, with({"--algo"}, kRunValuedOptions), kRunFlags);
+int cmd_show(int argc, char** argv) {
+  Args args(argc, argv, merged({.lists = {"--algo"}}, kRunOptions));
   if (args.help()) {
-    std::cout << "usage: tritri show NAME FILE... [--algo NAME]... [--plugin LIB] [--exec COMMAND]\n\n"
+    std::cout << "usage: tritri show NAME FILE... [--algo NAME...] [--plugin LIB...] [--exec COMMAND]...\n\n"
                  "One case in full: its coordinates (shortest exact decimal and hex float), its labels,\n"
                  "the oracle's record (with the exact intersection rounded to double) and the answers\n"
                  "of every algorithm (or those named with --algo).\n\n"
-              << kRunOptionsHelp;
+              << kRunOptionsHelp << '\n' << kListsHelp;
     return kOk;
   }
   if (args.positional().size() < 2) throw UsageError("show needs a case name and at least one file");

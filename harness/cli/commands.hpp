@@ -1,10 +1,27 @@
-// The `tritri` subcommands. Each lives in its own file and is listed once in main.cpp.
+// The `tritri` subcommands. Command NAME lives in harness/cli/cmd_NAME.cpp (which CMake picks up
+// by its name), defines `int cmd_NAME(int argc, char** argv)` and is listed once, in
+// TRITRI_CLI_COMMANDS below: adding a command is that file and one line there.
 #pragma once
 
 #include "tritri/algorithm.hpp"
 
+#include <iosfwd>
 #include <string>
 #include <vector>
+
+// X(NAME, summary), in the order `tritri --help` lists them. argv excludes the command name; the
+// entry point returns the exit status.
+#define TRITRI_CLI_COMMANDS(X)                                                                                \
+  X(list, "every algorithm with its levels, boundary semantics, tolerance and citation")                      \
+  X(label, "the oracle's record for every case in case files (TSV)")                                          \
+  X(answer, "one algorithm's answers for every case in case files (TSV)")                                     \
+  X(check, "algorithms against the oracle: errors per algorithm and family")                                  \
+  X(show, "one case: coordinates, the oracle's record and every algorithm's answer")                          \
+  X(corpus, "generate and label the singular-configuration corpus (case files per family)")                   \
+  X(bench, "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)")           \
+  X(scene, "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files")                \
+  X(compare, "what changed between two check or bench results (with a U test for times)")                    \
+  X(diff, "where two algorithms answer differently (e.g. a port and its authors' code)")
 
 namespace tritri::cli {
 
@@ -17,21 +34,22 @@ struct Command {
 // Exit statuses shared by every command.
 inline constexpr int kOk = 0;
 inline constexpr int kFindings = 1;  // e.g. check: new failures against a baseline
-inline constexpr int kUsage = 2;     // bad arguments, unreadable or malformed input
+inline constexpr int kUsage = 2;     // the user's arguments or input: InputError (and UsageError)
+inline constexpr int kInternal = 3;  // any other exception: a bug in tritri
+// What `tritri --help` and the README say about them.
+extern const char* const kExitStatusHelp;
 
-int run_list(int argc, char** argv);
-int run_label(int argc, char** argv);
-int run_answer(int argc, char** argv);
-int run_check(int argc, char** argv);
-int run_show(int argc, char** argv);
-int run_compare(int argc, char** argv);
-int run_diff(int argc, char** argv);  // harness/cli/cmd_diff.cpp: two algorithms' answers, case by case
-int run_corpus(int argc, char** argv);
-int run_bench(int argc, char** argv);  // harness/cli/cmd_bench.cpp, harness/bench/
-int run_scene(int argc, char** argv);  // harness/cli/cmd_scene.cpp, cases/scenes/
+// Runs one command, turning what it throws into its exit status and a message on `err`: an
+// InputError names the user's mistake (2); anything else is reported as a bug in tritri with the
+// command line that met it (3).
+int run_command(const Command& command, int argc, char** argv, std::ostream& err);
 
-// Algorithms named by --algo (repeatable, or comma-separated); when none is named, all but the
-// build variants (NAME@v3fma: named explicitly, Algorithm::build). Throws
+#define TRITRI_CLI_DECLARE(name, summary) int cmd_##name(int argc, char** argv);
+TRITRI_CLI_COMMANDS(TRITRI_CLI_DECLARE)
+#undef TRITRI_CLI_DECLARE
+
+// Algorithms named by --algo (Args has split its list); when none is named, all but the
+// other builds (NAME@v3fma: run when named, Algorithm::build). Throws
 // UsageError naming an unknown algorithm and listing the known ones.
 std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& names);
 
@@ -50,18 +68,13 @@ std::vector<Case> load_cases(const std::vector<std::string>& files);
 
 std::string segment_text(const SegmentAnswer& s);  // "-", "empty", "x,y,z", "x,y,z;x,y,z", ...
 
-// The options of every command that runs algorithms: external algorithms (--plugin LIB,
+// The options of every command that runs algorithms: external algorithms (--plugin LIB...,
 // --exec COMMAND with --exec-name NAME) and how they are run (--timeout S, --no-isolation).
-extern const std::set<std::string> kRunValuedOptions;
-extern const std::set<std::string> kRunFlags;
-extern const char* const kRunOptionsHelp;
+extern const OptionSpec kRunOptions;
+extern const std::string kRunOptionsHelp;
 // Loads the --plugin libraries and starts the --exec commands, adding them to the registry.
 void load_external_algorithms(const Args& args);
 IsolationOptions isolation_options(const Args& args);
-inline std::set<std::string> with(std::set<std::string> a, const std::set<std::string>& b) {
-  a.insert(b.begin(), b.end());
-  return a;
-}
 std::string vec_text(const Vec3<double>& v);
 
 }  // namespace tritri::cli

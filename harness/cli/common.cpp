@@ -4,7 +4,6 @@
 #include "harness/run/plugin.hpp"
 #include "harness/run/process_plugin.hpp"
 
-#include <cstdlib>
 #include <map>
 
 namespace tritri::cli {
@@ -31,39 +30,52 @@ std::vector<Case> load_cases(const std::vector<std::string>& files) {
   return all;
 }
 
-const std::set<std::string> kRunValuedOptions = {"--plugin", "--exec", "--exec-name", "--timeout"};
-const std::set<std::string> kRunFlags = {"--no-isolation"};
-const char* const kRunOptionsHelp =
-    "  --plugin LIB         also run the algorithm in shared library LIB (C ABI: tritri/plugin.h)\n"
+const OptionSpec kRunOptions = {.valued = {"--exec", "--exec-name", "--timeout"},
+                                .lists = {"--plugin"},
+                                .flags = {"--no-isolation"}};
+// The defaults shown are the ones used: IsolationOptions' and ProcessPluginOptions' (harness/run/).
+const std::string kRunOptionsHelp =
+    "  --plugin LIB...      also run the algorithms in shared libraries LIB (C ABI: tritri/plugin.h)\n"
     "  --exec COMMAND       also run an algorithm in another process over the line protocol\n"
-    "                       (harness/process_plugin.hpp); correctness only\n"
+    "                       (harness/run/process_plugin.hpp); correctness only\n"
     "  --exec-name NAME     the name of the --exec algorithm (default: exec, exec2, ...)\n"
-    "  --timeout S          a case that makes no progress for S seconds is a timeout (default 2;\n"
-    "                       5 per case for --exec)\n"
+    "  --timeout S          a case that makes no progress for S seconds is a timeout (default " +
+    format_double(IsolationOptions{}.stall_seconds) + ";\n                       " +
+    format_double(ProcessPluginOptions{}.timeout_seconds) + " per case for --exec)\n" +
     "  --no-isolation       run algorithms in this process (for a debugger; a crash ends the run)\n";
 
-void load_external_algorithms(const Args& args) {
+namespace {
+
+void load_external_algorithms_as_given(const Args& args) {
   for (const auto& lib : args.values("--plugin")) load_plugin(lib);
   const auto commands = args.values("--exec");
   const auto names = args.values("--exec-name");
   if (names.size() > commands.size()) throw UsageError("more --exec-name than --exec options");
-  const double timeout = args.value("--timeout") ? std::atof(args.value("--timeout")->c_str()) : 5.0;
+  const double timeout = args.seconds("--timeout").value_or(ProcessPluginOptions{}.timeout_seconds);
   for (std::size_t i = 0; i < commands.size(); ++i) {
     const std::string name = i < names.size() ? names[i] : i == 0 ? "exec" : "exec" + std::to_string(i + 1);
     add_process_algorithm(commands[i], name, timeout);
   }
 }
 
+}  // namespace
+
+// harness/run reports a library or command that cannot be loaded, or answers no probe, as a
+// std::runtime_error naming it; here that is the user's input (exit status 2).
+void load_external_algorithms(const Args& args) {
+  try {
+    load_external_algorithms_as_given(args);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+}
+
 IsolationOptions isolation_options(const Args& args) {
   IsolationOptions options;
   options.enabled = !args.flag("--no-isolation");
-  if (auto t = args.value("--timeout")) {
-    char* end = nullptr;
-    const double seconds = std::strtod(t->c_str(), &end);
-    if (end == t->c_str() || *end != '\0' || !(seconds > 0))
-      throw UsageError("--timeout takes a number of seconds > 0, not '" + *t + "'");
-    options.stall_seconds = seconds;
-  }
+  options.stall_seconds = args.seconds("--timeout").value_or(options.stall_seconds);
   return options;
 }
 

@@ -1,35 +1,23 @@
 // tritri: the reference test-suite and benchmark harness for 3-D triangle–triangle tests.
 #include "harness/cli/args.hpp"
-#include "cases/casefile.hpp"
 #include "harness/cli/commands.hpp"
 
 #include <cstring>
-#include <exception>
 #include <iostream>
 
 namespace tritri::cli {
 namespace {
 
-constexpr Command kCommands[] = {
-    {"list", "every algorithm with its levels, boundary semantics, tolerance and citation", run_list},
-    {"label", "the oracle's record for every case in case files (TSV)", run_label},
-    {"answer", "one algorithm's answers for every case in case files (TSV)", run_answer},
-    {"check", "algorithms against the oracle: errors per algorithm and family", run_check},
-    {"show", "one case: coordinates, the oracle's record and every algorithm's answer", run_show},
-    {"corpus", "generate and label the singular-configuration corpus (case files per family)", run_corpus},
-    {"bench", "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)", run_bench},
-    {"scene", "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files", run_scene},
-    {"compare", "what changed between two check or bench results (with a U test for times)", run_compare},
-    {"diff", "where two algorithms answer differently (e.g. a port and its authors' code)", run_diff},
-};
+#define TRITRI_CLI_ROW(name, summary) {#name, summary, cmd_##name},
+constexpr Command kCommands[] = {TRITRI_CLI_COMMANDS(TRITRI_CLI_ROW)};
+#undef TRITRI_CLI_ROW
 
 void print_usage(std::ostream& out) {
   out << "usage: tritri <command> [options] [files]\n\n"
          "tritri checks 3-D triangle-triangle intersection tests against an exact oracle (CGAL)\n"
          "and times them. Commands:\n";
   for (const auto& c : kCommands) out << "  " << c.name << std::string(10 - std::strlen(c.name), ' ') << c.summary << '\n';
-  out << "\n'tritri <command> --help' describes a command. Exit status: 0 ok, 1 findings (e.g. new\n"
-         "failures against a baseline), 2 bad arguments or input.\n";
+  out << "\n'tritri <command> --help' describes a command.\n" << kExitStatusHelp;
 }
 
 }  // namespace
@@ -41,21 +29,14 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
       if (a.build.empty()) chosen.push_back(&a);
     return chosen;
   }
-  for (const auto& list : names) {
-    std::size_t start = 0;
-    while (start <= list.size()) {
-      const std::size_t comma = std::min(list.find(',', start), list.size());
-      const std::string name = list.substr(start, comma - start);
-      start = comma + 1;
-      if (name.empty()) continue;
-      const Algorithm* a = registry().find(name);
-      if (!a) {
-        std::string known;
-        for (const auto& k : registry().all()) known += (known.empty() ? "" : ", ") + k.name;
-        throw UsageError("unknown algorithm '" + name + "' (known: " + known + ")");
-      }
-      if (std::find(chosen.begin(), chosen.end(), a) == chosen.end()) chosen.push_back(a);
+  for (const auto& name : names) {
+    const Algorithm* a = registry().find(name);
+    if (!a) {
+      std::string known;
+      for (const auto& k : registry().all()) known += (known.empty() ? "" : ", ") + k.name;
+      throw UsageError("unknown algorithm '" + name + "' (known: " + known + ")");
     }
+    if (std::find(chosen.begin(), chosen.end(), a) == chosen.end()) chosen.push_back(a);
   }
   return chosen;
 }
@@ -70,19 +51,7 @@ int main(int argc, char** argv) {
   }
   for (const auto& command : kCommands) {
     if (std::strcmp(argv[1], command.name) != 0) continue;
-    try {
-      return command.run(argc - 2, argv + 2);
-    } catch (const UsageError& e) {
-      std::cerr << "tritri " << command.name << ": " << e.what() << "\n(see 'tritri " << command.name
-                << " --help')\n";
-      return kUsage;
-    } catch (const tritri::CaseFileError& e) {
-      std::cerr << "tritri " << command.name << ": " << e.what() << '\n';
-      return kUsage;
-    } catch (const std::exception& e) {
-      std::cerr << "tritri " << command.name << ": " << e.what() << '\n';
-      return kUsage;
-    }
+    return run_command(command, argc - 2, argv + 2, std::cerr);
   }
   std::cerr << "tritri: unknown command '" << argv[1] << "'\n\n";
   print_usage(std::cerr);

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace exactsimd_test {
+namespace exact_pairs {
 
 using tritri::Triangle;
 using tritri::TrianglePair;
@@ -106,4 +106,4 @@ inline TrianglePair wide_pair(GenRng& r) {
   return p;
 }
 
-}  // namespace exactsimd_test
+}  // namespace exact_pairs

@@ -31,7 +31,7 @@ def load_published(folder):
 
 
 def labels(group):
-    """The labels a group of `tritri check --group-by` names: "variant=scale tilt=2^-3"."""
+    """The labels a group of `tritri check --group-by` names: "subsuite=scale tilt=2^-3"."""
     return dict(field.split("=", 1) for field in group.split())
 
 
@@ -218,7 +218,7 @@ class ReportFromFixture(unittest.TestCase):
             for label, cell in zip(header[1:], r[1:]):
                 ts = [t for t in sweeps["tallies"] if t["algorithm"] == r[0] and
                       labels(t["family"]).get("tilt") == label and
-                      labels(t["family"])["variant"] in ("symmetry", "scale", "translate")]
+                      labels(t["family"])["subsuite"] in ("symmetry", "scale", "translate")]
                 judged = sum(t["cases"] - t["unsupported"] for t in ts)
                 wrong = sum(t["false_positives"] + t["false_negatives"] + t["crashes"] + t["timeouts"]
                             for t in ts)
@@ -406,27 +406,27 @@ class Stages(unittest.TestCase):
 
 class Groups(unittest.TestCase):
     def test_the_sweep_a_group_counts_for(self):
-        self.assertEqual(groups.sweep_of("variant=scale transform=2^-7"), ("scale", "-7"))
-        self.assertEqual(groups.sweep_of("variant=scale tilt=2^-20"), ("tilt", "-20"))
-        self.assertEqual(groups.sweep_of("variant=translate transform=2^12*(0,-1,1)"), ("translate", "12"))
-        self.assertEqual(groups.sweep_of("variant=perturb transform=+1e-8"), ("perturb", "+1e-8"))
-        self.assertEqual(groups.sweep_of("variant=symmetry transform=sym-012-012-ab"), ("exact", "identity"))
-        self.assertEqual(groups.sweep_of("variant=symmetry offset=2^-40"), ("plane-offset", "-40"))
-        self.assertIsNone(groups.sweep_of("variant=symmetry transform=sym-021-012-ba"))
-        self.assertIsNone(groups.sweep_of("variant=rotate tilt=2^-20"))  # rotation moved the vertices
+        self.assertEqual(groups.sweep_of("subsuite=scale transform=2^-7"), ("scale", "-7"))
+        self.assertEqual(groups.sweep_of("subsuite=scale tilt=2^-20"), ("tilt", "-20"))
+        self.assertEqual(groups.sweep_of("subsuite=translate transform=2^12*(0,-1,1)"), ("translate", "12"))
+        self.assertEqual(groups.sweep_of("subsuite=perturb transform=+1e-8"), ("perturb", "+1e-8"))
+        self.assertEqual(groups.sweep_of("subsuite=symmetry transform=sym-012-012-ab"), ("exact", "identity"))
+        self.assertEqual(groups.sweep_of("subsuite=symmetry offset=2^-40"), ("plane-offset", "-40"))
+        self.assertIsNone(groups.sweep_of("subsuite=symmetry transform=sym-021-012-ba"))
+        self.assertIsNone(groups.sweep_of("subsuite=rotate tilt=2^-20"))  # rotation moved the vertices
 
     def test_every_labelled_sweep_is_asked_for(self):
         asked = groups.sweep_groupings()
         for sweep, (_, _, _, label) in analysis.SWEEPS.items():
             if label:
-                self.assertIn("variant," + label, asked, sweep)
+                self.assertIn("subsuite," + label, asked, sweep)
 
     def test_base_cases_of_the_symmetry_check(self):
         sym = load("check-symmetry.json")
-        self.assertTrue(all(labels(f)["variant"] == "symmetry" for f in sym["families"]))
+        self.assertTrue(all(labels(f)["subsuite"] == "symmetry" for f in sym["families"]))
         per = groups.variants_per_base(sym)
         self.assertEqual(sum(per.values()), len(sym["families"]))
-        self.assertEqual(groups.base_family("variant=symmetry @base=near-coplanar.through.0"), "near-coplanar")
+        self.assertEqual(groups.base_family("subsuite=symmetry @base=near-coplanar.through.0"), "near-coplanar")
 
 
 class Published(unittest.TestCase):

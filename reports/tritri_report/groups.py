@@ -1,12 +1,12 @@
 """Reading checks tallied by label groups (`tritri check --group-by`) instead of by family.
 
-A group is named by its labels as a case file writes them, "variant=scale tilt=2^-30"; a case
+A group is named by its labels as a case file writes them, "subsuite=scale tilt=2^-30"; a case
 is in one group of each grouping it carries the labels of. scripts/run asks for these groupings:
 
-  check-symmetry.json   variant=symmetry,@base     the symmetric variants of each base case
-  check-sweeps*.json    variant,transform          exact identity, scale, translation, rotation,
+  check-symmetry.json   subsuite=symmetry,@base     the symmetric variants of each base case
+  check-sweeps*.json    subsuite,transform          exact identity, scale, translation, rotation,
                                                    perturbation (the transformation applied)
-                        variant,KEY for each KEY   a construction's swept label (analysis.SWEEPS)
+                        subsuite,KEY for each KEY   a construction's swept label (analysis.SWEEPS)
   named suites          the label the paper's published file names
 
 This module turns those groups into what the report counts: sweep values, base cases.
@@ -18,7 +18,7 @@ from collections import Counter, OrderedDict
 from . import analysis
 from .data import Totals
 
-SYMMETRY_GROUPING = "variant=symmetry,@base"
+SYMMETRY_GROUPING = "subsuite=symmetry,@base"
 IDENTITY = "sym-012-012-ab"  # the symmetry variant that leaves a base case as built
 # Only exactly transformed variants keep a construction label's meaning: rotation and
 # perturbation move the vertices.
@@ -28,26 +28,26 @@ _POW2 = re.compile(r"2\^(-?\d+)")
 
 def sweep_groupings():
     """The --group-by specs of the sweeps' checks: the transformation, and each label swept."""
-    return ["variant,transform"] + ["variant," + s[3] for s in analysis.SWEEPS.values() if s[3]]
+    return ["subsuite,transform"] + ["subsuite," + s[3] for s in analysis.SWEEPS.values() if s[3]]
 
 
 def labels_of(group):
-    """"variant=scale tilt=2^-30" -> {"variant": "scale", "tilt": "2^-30"}"""
+    """"subsuite=scale tilt=2^-30" -> {"subsuite": "scale", "tilt": "2^-30"}"""
     return dict(field.partition("=")[::2] for field in group.split(" "))
 
 
-def _transform_sweep(variant, transform):
-    if variant == "symmetry" and transform == IDENTITY:
+def _transform_sweep(subsuite, transform):
+    if subsuite == "symmetry" and transform == IDENTITY:
         return "exact", "identity"
-    if variant == "scale":
+    if subsuite == "scale":
         m = _POW2.fullmatch(transform)
         return ("scale", m.group(1)) if m else None
-    if variant == "translate":
+    if subsuite == "translate":
         m = re.match(r"2\^(-?\d+)\*", transform)
         return ("translate", m.group(1)) if m else None
-    if variant == "perturb":
+    if subsuite == "perturb":
         return "perturb", transform
-    if variant == "rotate":
+    if subsuite == "rotate":
         return "rotate", "random"
     return None
 
@@ -55,10 +55,10 @@ def _transform_sweep(variant, transform):
 def sweep_of(group):
     """(sweep, value) a group of check-sweeps.json counts for, or None."""
     lab = labels_of(group)
-    variant = lab.get("variant")
+    subsuite = lab.get("subsuite")
     if "transform" in lab:
-        return _transform_sweep(variant, lab["transform"])
-    if variant not in EXACT_VARIANTS:
+        return _transform_sweep(subsuite, lab["transform"])
+    if subsuite not in EXACT_VARIANTS:
         return None
     for sweep, (_, _, _, key) in analysis.SWEEPS.items():
         if key in lab:
@@ -126,7 +126,7 @@ def group_is_asymmetric(t):
 
 
 def base_case(group):
-    """"variant=symmetry @base=near-coplanar.through.0" -> "near-coplanar.through.0" """
+    """"subsuite=symmetry @base=near-coplanar.through.0" -> "near-coplanar.through.0" """
     return labels_of(group).get("@base", group)
 
 

@@ -28,7 +28,7 @@
 
 #include <utility>
 
-namespace tritri::exactsimd::detail {
+namespace tritri::exact::detail {
 
 struct Tri {
   P v[3];
@@ -347,4 +347,4 @@ inline bool meets(const RelationAnswer& a) {
   return dimension_of(a.relation) != Dimension::none;
 }
 
-}  // namespace tritri::exactsimd::detail
+}  // namespace tritri::exact::detail

@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace tritri::exactsimd::intexact {
+namespace tritri::exact::intexact {
 
 struct Counts {
   std::uint64_t fast3 = 0, middle3 = 0, wide3 = 0, fast2 = 0, middle2 = 0, wide2 = 0, structural = 0;
@@ -324,4 +324,4 @@ inline void big_mul(const Big& a, const Big& b, Big& out) {
   trim(out);
 }
 
-}  // namespace tritri::exactsimd::intexact
+}  // namespace tritri::exact::intexact

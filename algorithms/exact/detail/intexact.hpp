@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace tritri::exactsimd::intexact {
+namespace tritri::exact::intexact {
 
 // The binary exponents of x's leading and last set bits (x finite, non-zero): |x| < 2^(lead+1)
 // and x is a multiple of 2^last.
@@ -189,4 +189,4 @@ inline int det2_sign(const double* a, const double* b, const double* c, int i, i
   return r.n == 0 ? 0 : (r.neg ? -1 : 1);
 }
 
-}  // namespace tritri::exactsimd::intexact
+}  // namespace tritri::exact::intexact

@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace tritri::exactsimd {
+namespace tritri::exact {
 
 using P = const double*;
 
@@ -205,7 +205,8 @@ inline constexpr int kGridBits = 15;  // |coordinate| < 2^(q + 15), every coordi
 
 // True when all n coordinates are integer multiples of one power of two 2^q with magnitude
 // below 2^(q+15), and 2^(3q) is at least 2^-1074 and the magnitudes at most 2^300: every
-// det3/det2 of such coordinates evaluates exactly in double (algorithms/exact/README.md, "The grid case").
+// det3/det2 of such coordinates evaluates exactly in double (algorithms/exact/README.md,
+// "The grid case (pass 2 and `Plain`)").
 inline bool grid_exact(const double* c, int n) {
   double m = 0.0;
   for (int i = 0; i < n; ++i) m = dmax(m, std::fabs(c[i]));
@@ -229,4 +230,4 @@ inline bool all_finite(const double* c, int n) {
   return true;
 }
 
-}  // namespace tritri::exactsimd
+}  // namespace tritri::exact

@@ -5,7 +5,7 @@
 #include "algorithms/exact/detail/classify.hpp"
 #include "tritri/geometry.hpp"
 
-namespace tritri::exactsimd::detail {
+namespace tritri::exact::detail {
 
 // Which predicate policy decided a pair in the scalar path (for the statistics).
 enum class Route : std::uint8_t { grid, filtered, declined };
@@ -48,4 +48,4 @@ inline RelationAnswer relation_scalar(const TrianglePair& pair, Route* route = n
   return solve<true>(pair, route);
 }
 
-}  // namespace tritri::exactsimd::detail
+}  // namespace tritri::exact::detail

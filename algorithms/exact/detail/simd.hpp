@@ -13,34 +13,35 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 // Lane counts up to which a block with no crossing lane skips the interval stage (a branch).
-#if !defined(EXACTSIMD_SKIP_EMPTY_GD_MAX_LANES)
-#define EXACTSIMD_SKIP_EMPTY_GD_MAX_LANES 4
+#if !defined(TRITRI_EXACT_SKIP_EMPTY_GD_MAX_LANES)
+#define TRITRI_EXACT_SKIP_EMPTY_GD_MAX_LANES 4
 #endif
 
 #if (defined(__x86_64__) || defined(_M_X64)) && (defined(__GNUC__) || defined(__clang__)) && \
-    !defined(EXACTSIMD_NO_SIMD)
-#define EXACTSIMD_X86 1
+    !defined(TRITRI_EXACT_NO_SIMD)
+#define TRITRI_EXACT_X86 1
 #include <immintrin.h>
 #else
-#define EXACTSIMD_X86 0
+#define TRITRI_EXACT_X86 0
 #endif
 
-namespace tritri::exactsimd {
+namespace tritri::exact {
 // Set on an index handed from the second SIMD pass to the scalar pass: the pair is on the grid.
 inline constexpr std::uint32_t kGridFlag = 0x80000000u;
-}  // namespace tritri::exactsimd
+}  // namespace tritri::exact
 
-#if EXACTSIMD_X86
+#if TRITRI_EXACT_X86
 
 // A piece of kernel.inc's block functions, split out for reading: always inlined into them.
-#define EXACTSIMD_PIECE [[gnu::always_inline]] inline
+#define TRITRI_EXACT_PIECE [[gnu::always_inline]] inline
 
 // What the wrappers spell alike but for the intrinsics' prefix P (_mm, _mm256, _mm512) or
 // comparison intrinsic: written once here, expanded inside each wrapper.
 // The lane count W, the vector type D, the mask type M, broadcast and lane-wise arithmetic.
-#define EXACTSIMD_LANES(lanes, vector, mask, P)          \
+#define TRITRI_EXACT_LANES(lanes, vector, mask, P)          \
   static constexpr int W = lanes;                       \
   using D = vector;                                     \
   using M = mask;                                       \
@@ -51,13 +52,13 @@ inline constexpr std::uint32_t kGridFlag = 0x80000000u;
   static D min(D a, D b) { return P##_min_pd(a, b); }   \
   static D max(D a, D b) { return P##_max_pd(a, b); }
 // Masks held in vectors, all bits of a lane set or clear (SSE2, AVX2).
-#define EXACTSIMD_VECTOR_MASKS(P)                              \
+#define TRITRI_EXACT_VECTOR_MASKS(P)                              \
   static M mand(M a, M b) { return P##_and_pd(a, b); }        \
   static M mor(M a, M b) { return P##_or_pd(a, b); }          \
   static M mxor(M a, M b) { return P##_xor_pd(a, b); }        \
   static M mandnot(M a, M b) { return P##_andnot_pd(b, a); } /* a & ~b */
 // Comparisons through one intrinsic taking the predicate (AVX2's cmp_pd, AVX-512's cmp_pd_mask).
-#define EXACTSIMD_PREDICATE_COMPARISONS(CMP)                    \
+#define TRITRI_EXACT_PREDICATE_COMPARISONS(CMP)                    \
   static M gt(D a, D b) { return CMP(a, b, _CMP_GT_OQ); }      \
   static M lt(D a, D b) { return CMP(a, b, _CMP_LT_OQ); }      \
   static M le(D a, D b) { return CMP(a, b, _CMP_LE_OQ); }      \
@@ -70,7 +71,7 @@ inline constexpr std::uint32_t kGridFlag = 0x80000000u;
 // and slot s+1.
 //   load_ptrs  c[s] = slot s (0..17) of the pairs at p[0], ..., p[W-1]
 //   load       the same for the W consecutive pairs at p (the offsets fold into the loads)
-#define EXACTSIMD_LOADS(P)                                                               \
+#define TRITRI_EXACT_LOADS(P)                                                               \
   template <class Pair>                                                                  \
   static void load_from(Pair pair, D* c) {                                               \
     for (int s = 0; s < 18; s += 2) {                                                    \
@@ -87,10 +88,10 @@ inline constexpr std::uint32_t kGridFlag = 0x80000000u;
   }
 
 // ---------------------------------------------------------------- SSE2 (baseline)
-namespace tritri::exactsimd::isa_sse2 {
+namespace tritri::exact::isa_sse2 {
 struct I {
-  EXACTSIMD_LANES(2, __m128d, __m128d, _mm)
-  EXACTSIMD_VECTOR_MASKS(_mm)
+  TRITRI_EXACT_LANES(2, __m128d, __m128d, _mm)
+  TRITRI_EXACT_VECTOR_MASKS(_mm)
   static D abs(D a) { return _mm_andnot_pd(_mm_set1_pd(-0.0), a); }
   static M gt(D a, D b) { return _mm_cmpgt_pd(a, b); }
   static M lt(D a, D b) { return _mm_cmplt_pd(a, b); }
@@ -110,10 +111,10 @@ struct I {
   }
   template <class Pair>
   static D alternate(Pair pair, int first, int s) { return _mm_loadu_pd(pair(first) + s); }
-  EXACTSIMD_LOADS(_mm)
+  TRITRI_EXACT_LOADS(_mm)
 };
 #include "algorithms/exact/detail/kernel.inc"
-}  // namespace tritri::exactsimd::isa_sse2
+}  // namespace tritri::exact::isa_sse2
 
 // ---------------------------------------------------------------- AVX2
 #if defined(__clang__)
@@ -122,11 +123,11 @@ struct I {
 #pragma GCC push_options
 #pragma GCC target("avx2")
 #endif
-namespace tritri::exactsimd::isa_avx2 {
+namespace tritri::exact::isa_avx2 {
 struct I {
-  EXACTSIMD_LANES(4, __m256d, __m256d, _mm256)
-  EXACTSIMD_VECTOR_MASKS(_mm256)
-  EXACTSIMD_PREDICATE_COMPARISONS(_mm256_cmp_pd)
+  TRITRI_EXACT_LANES(4, __m256d, __m256d, _mm256)
+  TRITRI_EXACT_VECTOR_MASKS(_mm256)
+  TRITRI_EXACT_PREDICATE_COMPARISONS(_mm256_cmp_pd)
   static D abs(D a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a); }
   static M mnot(M a) { return _mm256_xor_pd(a, _mm256_castsi256_pd(_mm256_set1_epi32(-1))); }
   static D sel(M m, D a, D b) { return _mm256_blendv_pd(b, a, m); }
@@ -142,10 +143,10 @@ struct I {
     return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(pair(first) + s)), _mm_loadu_pd(pair(first + 2) + s),
                                 1);
   }
-  EXACTSIMD_LOADS(_mm256)
+  TRITRI_EXACT_LOADS(_mm256)
 };
 #include "algorithms/exact/detail/kernel.inc"
-}  // namespace tritri::exactsimd::isa_avx2
+}  // namespace tritri::exact::isa_avx2
 #if defined(__clang__)
 #pragma clang attribute pop
 #else
@@ -162,10 +163,10 @@ struct I {
 #pragma GCC diagnostic ignored "-Wuninitialized"  // GCC 12: _mm512_undefined_pd() in the intrinsics
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-namespace tritri::exactsimd::isa_avx512 {
+namespace tritri::exact::isa_avx512 {
 struct I {
-  EXACTSIMD_LANES(8, __m512d, __mmask8, _mm512)
-  EXACTSIMD_PREDICATE_COMPARISONS(_mm512_cmp_pd_mask)
+  TRITRI_EXACT_LANES(8, __m512d, __mmask8, _mm512)
+  TRITRI_EXACT_PREDICATE_COMPARISONS(_mm512_cmp_pd_mask)
   static D abs(D a) { return _mm512_abs_pd(a); }
   static M mand(M a, M b) { return static_cast<M>(a & b); }
   static M mor(M a, M b) { return static_cast<M>(a | b); }
@@ -191,10 +192,10 @@ struct I {
     return _mm512_insertf64x4(_mm512_castpd256_pd512(half(pair(first), pair(first + 2), s)),
                               half(pair(first + 4), pair(first + 6), s), 1);
   }
-  EXACTSIMD_LOADS(_mm512)
+  TRITRI_EXACT_LOADS(_mm512)
 };
 #include "algorithms/exact/detail/kernel.inc"
-}  // namespace tritri::exactsimd::isa_avx512
+}  // namespace tritri::exact::isa_avx512
 #if defined(__clang__)
 #pragma clang attribute pop
 #else
@@ -202,10 +203,10 @@ struct I {
 #pragma GCC pop_options
 #endif
 
-#undef EXACTSIMD_PIECE
-#undef EXACTSIMD_LANES
-#undef EXACTSIMD_VECTOR_MASKS
-#undef EXACTSIMD_PREDICATE_COMPARISONS
-#undef EXACTSIMD_LOADS
+#undef TRITRI_EXACT_PIECE
+#undef TRITRI_EXACT_LANES
+#undef TRITRI_EXACT_VECTOR_MASKS
+#undef TRITRI_EXACT_PREDICATE_COMPARISONS
+#undef TRITRI_EXACT_LOADS
 
-#endif  // EXACTSIMD_X86
+#endif  // TRITRI_EXACT_X86

@@ -24,8 +24,8 @@
 #include <vector>
 
 using namespace tritri;
-using namespace exactsimd_test;
-namespace ex = tritri::exactsimd;
+using namespace exact_pairs;
+namespace ex = tritri::exact;
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Unit tests of exactsimd: the error bounds against exact rational arithmetic on adversarial
+// Unit tests of exact: the error bounds against exact rational arithmetic on adversarial
 // input, the grid-exactness claim, the three exact engines against each other, every decision
 // path of the batch (forced and observed through the statistics), every branch of the exact
 // classification against the oracle, and the built-in cases in all 72 orders.
@@ -18,8 +18,8 @@
 #include <vector>
 
 using namespace tritri;
-using namespace exactsimd_test;
-namespace ex = tritri::exactsimd;
+using namespace exact_pairs;
+namespace ex = tritri::exact;
 
 namespace {
 
@@ -414,13 +414,13 @@ TEST(Engines, IntegerExpansionAndGmpAgree) {
     coords(p, c);
     const double* q[6];
     for (int k = 0; k < 6; ++k) q[k] = c + 3 * r.integer(0, 5);
-    const int a = ex::intexact::det3_sign(q), b = ex::exact::det3_sign(q), g = ex::exact::det3_sign_gmp(q);
+    const int a = ex::intexact::det3_sign(q), b = ex::expansion::det3_sign(q), g = ex::expansion::det3_sign_gmp(q);
     ASSERT_EQ(a, g) << trial;
     ASSERT_EQ(b, g) << trial;
     const int i = static_cast<int>(r.integer(0, 2)), j = (i + 1 + static_cast<int>(r.integer(0, 1))) % 3;
-    const int a2 = ex::intexact::det2_sign(q[0], q[1], q[2], i, j), g2 = ex::exact::det2_sign_gmp(q[0], q[1], q[2], i, j);
+    const int a2 = ex::intexact::det2_sign(q[0], q[1], q[2], i, j), g2 = ex::expansion::det2_sign_gmp(q[0], q[1], q[2], i, j);
     ASSERT_EQ(a2, g2);
-    ASSERT_EQ(ex::exact::det2_sign(q[0], q[1], q[2], i, j), g2);
+    ASSERT_EQ(ex::expansion::det2_sign(q[0], q[1], q[2], i, j), g2);
   }
   std::printf("    integer engine: fast3 %llu middle3 %llu wide3 %llu fast2 %llu middle2 %llu wide2 %llu structural %llu\n",
               (unsigned long long)ic.fast3, (unsigned long long)ic.middle3, (unsigned long long)ic.wide3,
@@ -444,12 +444,12 @@ TEST(Engines, ExtremeValues) {
     for (auto& v : c) v = vals[r.integer(0, std::size(vals) - 1)];
     const double* q[6];
     for (int k = 0; k < 6; ++k) q[k] = c + 3 * r.integer(0, 5);
-    const int g = ex::exact::det3_sign_gmp(q);
+    const int g = ex::expansion::det3_sign_gmp(q);
     ASSERT_EQ(ex::intexact::det3_sign(q), g);
-    ASSERT_EQ(ex::exact::det3_sign(q), g);
+    ASSERT_EQ(ex::expansion::det3_sign(q), g);
     ASSERT_EQ(ex::Filtered::d3(q[0], q[1], q[2], q[3], q[4], q[5]), g);
-    ASSERT_EQ(ex::intexact::det2_sign(q[0], q[1], q[2], 0, 1), ex::exact::det2_sign_gmp(q[0], q[1], q[2], 0, 1));
-    ASSERT_EQ(ex::Filtered::o2(q[0], q[1], q[2], 2, 0), ex::exact::det2_sign_gmp(q[0], q[1], q[2], 2, 0));
+    ASSERT_EQ(ex::intexact::det2_sign(q[0], q[1], q[2], 0, 1), ex::expansion::det2_sign_gmp(q[0], q[1], q[2], 0, 1));
+    ASSERT_EQ(ex::Filtered::o2(q[0], q[1], q[2], 2, 0), ex::expansion::det2_sign_gmp(q[0], q[1], q[2], 2, 0));
   }
 }
 

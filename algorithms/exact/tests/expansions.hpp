@@ -38,10 +38,10 @@
 #include <cstring>
 
 #if defined(__FAST_MATH__)
-#error "exactsimd needs IEEE arithmetic: do not compile it with -ffast-math"
+#error "exact needs IEEE arithmetic: do not compile it with -ffast-math"
 #endif
 
-namespace tritri::exactsimd::exact {
+namespace tritri::exact::expansion {
 
 // ---- counters of the exact engines (per thread; read by tests and the timing program) ----
 struct EngineCounts {
@@ -400,12 +400,12 @@ inline int det2_sign(const double* a, const double* b, const double* c, int i, i
   return det2_sign_expansion_scaled(q[0], q[1], q[2], i, j);
 }
 
-}  // namespace tritri::exactsimd::exact
+}  // namespace tritri::exact::expansion
 
-namespace tritri::exactsimd {
+namespace tritri::exact {
 
 // The predicate policy on this engine, for classify<Exact, ...> in the tests: an independent
 // implementation to cross-check the integer engine of the algorithm (IntExact).
-using Exact = ExactSigns<exact::det3_sign, exact::det2_sign>;
+using Exact = ExactSigns<expansion::det3_sign, expansion::det2_sign>;
 
-}  // namespace tritri::exactsimd
+}  // namespace tritri::exact

@@ -21,7 +21,7 @@
 #include <vector>
 
 using namespace tritri;
-namespace ex = tritri::exactsimd;
+namespace ex = tritri::exact;
 
 namespace {
 

@@ -1,5 +1,5 @@
 """1.5: whether an algorithm's answers change across the symmetric variants of one base case
-(check-symmetry.json, grouped by `variant=symmetry,@base`)."""
+(check-symmetry.json, grouped by `subsuite=symmetry,@base`)."""
 
 from .. import groups
 from ..markdown import NOT_MEASURED, table
