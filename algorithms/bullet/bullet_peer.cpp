@@ -2,7 +2,7 @@
 // the library (CMakeLists.txt), so this file and the linked build agree.
 #include "algorithms/bullet/bullet_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <BulletCollision/Gimpact/btTriangleShapeEx.h>
 #include <BulletCollision/Gimpact/gim_tri_collision.h>

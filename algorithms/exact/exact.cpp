@@ -1,6 +1,6 @@
 #include "algorithms/exact/exact.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 namespace {

@@ -1,7 +1,7 @@
 // FCL's headers are included here only, so nothing else compiles against them.
 #include "algorithms/fcl/fcl_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 

@@ -1,6 +1,6 @@
 #include "algorithms/null/null.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 

@@ -1,7 +1,7 @@
 // ODE's headers are included here only.
 #include "algorithms/ode/ode_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <ode/ode.h>
 

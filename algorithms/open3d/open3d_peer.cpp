@@ -1,7 +1,7 @@
 // Open3D's headers are included here only, so nothing else compiles against them.
 #include "algorithms/open3d/open3d_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <open3d/geometry/IntersectionTest.h>
 

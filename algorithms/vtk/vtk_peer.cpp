@@ -1,7 +1,7 @@
 // VTK's headers are included here only.
 #include "algorithms/vtk/vtk_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <vtkIntersectionPolyDataFilter.h>
 
