@@ -37,14 +37,15 @@ void register_exact(Registry& registry) {
   Algorithm simd = variant(paper, "exact",
       "exact overlap and relation: SIMD lanes of orientation signs with semi-static error bounds, "
       "a grid pass, then an exact scalar classification (integer engine)");
-  simd.set_batch<Level::overlap>(Scalar::double_, &exactsimd::overlap_batch);
-  simd.set_batch<Level::relation>(Scalar::double_, &exactsimd::relation_batch);
+  add_level<Level::overlap>(simd, &exactsimd::overlap_batch, &exactsimd::overlap);
+  add_level<Level::relation>(simd, &exactsimd::relation_batch, &exactsimd::relation);
   simd.counters = {&exactsimd::reset_stats, &path_counts<true>};
   registry.add(std::move(simd));
   Algorithm scalar = variant(paper, "exact-scalar",
       "the same answers from the scalar path alone: every pair through the filtered exact classification");
-  scalar.set_batch<Level::overlap>(Scalar::double_, &overlap_scalar_batch);
-  scalar.set_batch<Level::relation>(Scalar::double_, &relation_scalar_batch);
+  // The one-pair API is the scalar path already: both entries share it.
+  add_level<Level::overlap>(scalar, &overlap_scalar_batch, &exactsimd::overlap);
+  add_level<Level::relation>(scalar, &relation_scalar_batch, &exactsimd::relation);
   scalar.counters = {&exactsimd::reset_stats, &path_counts<false>};
   registry.add(std::move(scalar));
 }

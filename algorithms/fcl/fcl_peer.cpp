@@ -23,7 +23,7 @@ void register_fcl(Registry& registry) {
                            "fcl::detail::Intersect<double>::intersect_Triangle",
                .summary = "FCL 0.7 intersect_Triangle: separating-axis test on 17 axes, strict separation (closed)"});
   // The batch loop is generated in this file, beside the kernel, so the per-pair call inlines.
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&fcl_peer::overlap>);
+  add_level<Level::overlap>(a, [](const TrianglePair& p) { return fcl_peer::overlap(p); });
   registry.add(std::move(a));
 }
 

@@ -27,7 +27,7 @@ void register_open3d(Registry& registry) {
                              .quantity = "|N.X+d| (unnormalised plane distance) after centring the six points "
                                          "and dividing each axis by its standard deviation",
                              .relative = true}});
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&open3d_peer::overlap>);
+  add_level<Level::overlap>(a, [](const TrianglePair& p) { return open3d_peer::overlap(p); });
   registry.add(std::move(a));
 }
 

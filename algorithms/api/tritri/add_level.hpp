@@ -1,5 +1,5 @@
-// Registering a level: add_level makes an algorithm's entry points for one level from a per-pair
-// kernel, generating the batch loops with the kernel inlined into each.
+// Registering a level, in one call: add_level makes an algorithm's entry points for one level
+// (its batch loops, kernel inlined, and its one-pair entry) from a per-pair kernel, or takes them.
 #pragma once
 
 #include "tritri/algorithm.hpp"
@@ -46,6 +46,16 @@ void kernel_batch(const TrianglePair* pairs, std::size_t n, AnswerOf<L>* out) {
   for (std::size_t i = 0; i < n; ++i) out[i] = to_answer<AnswerOf<L>>(call_on<T>(kernel, pairs[i]));
 }
 
+// The one-pair entry: an out-of-line function that runs the same kernel on one pair.
+template <Level L, class Kernel>
+AnswerOf<L> kernel_one_pair(const TrianglePair& pair) {
+  return to_answer<AnswerOf<L>>(Kernel{}(pair));
+}
+
+// The kernel takes pairs of scalar T (a generic kernel may be constrained, e.g. to floating point).
+template <class Kernel, class T>
+inline constexpr bool kTakes = std::is_invocable_v<const Kernel&, const PairT<T>&>;
+
 template <auto Fn>
 struct FunctionKernel {
   template <class P>
@@ -73,20 +83,29 @@ void segment_batch(const TrianglePair* pairs, std::size_t n, SegmentAnswer* out)
   detail::kernel_batch<Level::segment, T, detail::FunctionKernel<Kernel>>(pairs, n, out);
 }
 
-// Registers level L of a port templated on its scalar, in one line: `Kernel` is a stateless
-// generic lambda taking `const PairT<T>&`, e.g.
+// Registers level L from a per-pair kernel: a stateless lambda taking `const PairT<T>&`. A port
+// is generic over its scalar, e.g.
 //   add_level<Level::overlap>(a, []<class T>(const PairT<T>& p) { return overlap<T, true>(p); });
-// It is instantiated on double, float and the counting scalar (tritri/counting.hpp).
+// and gets a batch entry on double, float and the counting scalar (tritri/counting.hpp), each
+// scalar the kernel accepts (`[]<std::floating_point T>`: not the counting one); a kernel that
+// calls a library takes `const TrianglePair&` and gets double alone. The one-pair entry runs the
+// kernel on one double pair.
 template <Level L, class Kernel>
 void add_level(Algorithm& a, Kernel) {
+  static_assert(detail::kTakes<Kernel, double>, "add_level: the kernel must take const PairT<double>&");
   a.set_batch<L>(Scalar::double_, &detail::kernel_batch<L, double, Kernel>);
-  a.set_batch<L>(Scalar::float_, &detail::kernel_batch<L, float, Kernel>);
-  a.set_batch<L>(Scalar::counted, &detail::kernel_batch<L, Counted, Kernel>);
+  if constexpr (detail::kTakes<Kernel, float>) a.set_batch<L>(Scalar::float_, &detail::kernel_batch<L, float, Kernel>);
+  if constexpr (detail::kTakes<Kernel, Counted>)
+    a.set_batch<L>(Scalar::counted, &detail::kernel_batch<L, Counted, Kernel>);
+  a.set_one_pair<L>(&detail::kernel_one_pair<L, Kernel>);
 }
-// The same on double alone, for tests that call a library on double (FCL, CGAL).
-template <Level L, class Kernel>
-void add_level_double(Algorithm& a, Kernel) {
-  a.set_batch<L>(Scalar::double_, &detail::kernel_batch<L, double, Kernel>);
+
+// Registers level L from a hand-written batch (on double) and the one-pair function that answers
+// as it does.
+template <Level L>
+void add_level(Algorithm& a, BatchFn<L> batch, PairFn<L> one_pair) {
+  a.set_batch<L>(Scalar::double_, batch);
+  a.set_one_pair<L>(one_pair);
 }
 
 }  // namespace tritri

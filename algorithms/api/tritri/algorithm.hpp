@@ -50,7 +50,7 @@ struct Algorithm;
 // One variant of a paper's entry: the paper's declaration under the variant's name and summary.
 Algorithm variant(Declaration paper, std::string name, std::string summary);
 
-// Its entry points (EntryPoints: batch<L>(), ...) are set by add_level
+// Its entry points (EntryPoints: batch<L>(), one_pair<L>(), ...) are set by add_level
 // (tritri/add_level.hpp).
 struct Algorithm : EntryPoints {
   Algorithm() = default;
