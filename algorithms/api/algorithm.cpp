@@ -40,7 +40,7 @@ Algorithm variant(Declaration paper, std::string name, std::string summary) {
 
 std::optional<Algorithm> Algorithm::on_scalar(Scalar s) const {
   if (s == Scalar::double_) return *this;
-  if (kind != Kind::batch || !has_scalar(s)) return std::nullopt;
+  if (!has_scalar(s)) return std::nullopt;
   Algorithm copy = *this;
   copy.name = name + "@" + std::string(to_string(s));
   copy.summary = summary + " [" + std::string(to_string(s)) + " instantiation: each pair rounded to " +

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <map>
 #include <memory>
 #include <poll.h>
 #include <stdexcept>
@@ -173,6 +174,19 @@ ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std
 }  // namespace tritri
 
 namespace tritri {
+namespace {
+// By name: the registry's entries are copied (NAME@float and the like), names are unique.
+std::map<std::string, ProcessPluginOptions>& process_plugins() {
+  static std::map<std::string, ProcessPluginOptions> plugins;
+  return plugins;
+}
+}  // namespace
+
+const ProcessPluginOptions* find_process_plugin(const std::string& name) {
+  const auto& plugins = process_plugins();
+  const auto found = plugins.find(name);
+  return found == plugins.end() ? nullptr : &found->second;
+}
 
 const Algorithm& add_process_algorithm(const std::string& command, const std::string& name,
                                        double timeout_seconds) {
@@ -189,10 +203,11 @@ const Algorithm& add_process_algorithm(const std::string& command, const std::st
   a.citation = "process plug-in: " + command;
   a.summary = "process plug-in (" + command + ")";
   a.accepts_degenerate = false;
-  a.kind = Algorithm::Kind::process;
-  a.process = Algorithm::Process{command, probe.answers_relation, timeout_seconds};
+  a.answered_elsewhere = probe.answers_relation ? LevelSet{Level::overlap, Level::relation} : LevelSet{Level::overlap};
   a.folder = "exec:" + command;
-  return add_external_algorithm(std::move(a));
+  const Algorithm& added = add_external_algorithm(std::move(a));
+  process_plugins()[name] = {command, timeout_seconds};
+  return added;
 }
 
 }  // namespace tritri

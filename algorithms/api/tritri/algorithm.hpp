@@ -69,16 +69,9 @@ struct Algorithm : EntryPoints {
   Tolerance tolerance;
   bool accepts_degenerate = false;  // zero-area triangles; if false the harness never passes one
 
-  // How the harness reaches it: batch entry points in this process (timed), or another process
-  // spoken to over a line protocol (harness/run/process_plugin.hpp: checked, never timed).
-  enum class Kind : std::uint8_t { batch, process };
-  Kind kind = Kind::batch;
-  struct Process {
-    std::string command;
-    bool relation = false;  // it answers the relation level as well as overlap
-    double timeout_seconds = 5.0;
-  };
-  Process process;  // Kind::process only
+  // Levels it answers through no entry point here: the harness reaches such an algorithm by a
+  // means of its own (harness/run/runner.hpp), and checks it but cannot time it.
+  LevelSet answered_elsewhere;
 
   // Stages timed on their own by `tritri bench` (see StageEntry). Optional.
   std::vector<StageEntry> stages;
@@ -91,13 +84,10 @@ struct Algorithm : EntryPoints {
   // run when named (--algo NAME@v3fma), not by default.
   std::string build;
 
-  // It answers `level` (through a batch entry point on double, or as a process).
-  bool answers(Level level) const {
-    if (kind == Kind::process) return level == Level::overlap || (level == Level::relation && process.relation);
-    return has_batch(level);
-  }
-  // It can be timed: its answers come from batch entry points in this process.
-  bool timeable() const { return kind == Kind::batch; }
+  // It answers `level` (through a batch entry point on double, or elsewhere).
+  bool answers(Level level) const { return has_batch(level) || answered_elsewhere.contains(level); }
+  // It can be timed: every level it answers has a batch entry point here.
+  bool timeable() const { return answered_elsewhere.empty(); }
   std::string levels() const;  // "overlap,relation"
 
   // The same algorithm answering through its instantiation on `s` in place of double, named
