@@ -1,5 +1,5 @@
 // What an algorithm is and the registry's bookkeeping: compiled into tritri_algorithms and,
-// again, into every build variant's module (algorithms/api/build_variant_module.cpp), which
+// again, into every second build's module (algorithms/api/build_module.cpp), which
 // fills a registry of its own.
 #include "tritri/algorithm.hpp"
 

@@ -80,7 +80,7 @@ struct Algorithm : EntryPoints {
 
   std::string folder;  // filled in by the registry: the algorithm's folder under algorithms/
   // "" for the project's build; the build's name ("v3fma") for an entry of a second build of the
-  // same code (algorithms/api/build_variants.hpp). A second build doubles a run's time, so its entries
+  // same code (algorithms/api/builds.hpp). A second build doubles a run's time, so its entries
   // run when named (--algo NAME@v3fma), not by default.
   std::string build;
 
