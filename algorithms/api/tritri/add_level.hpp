@@ -66,7 +66,9 @@ struct FunctionKernel {
 
 }  // namespace detail
 
-// A level's batch entry point from a per-pair function of one scalar type.
+// A level's batch entry point from a per-pair function of one scalar type: for the harness's
+// stand-ins (its tests' fakes, the timing floor), which set it with set_batch and need no
+// one-pair entry. An algorithm registers its levels with add_level (below).
 template <auto Kernel>
 void overlap_batch(const TrianglePair* pairs, std::size_t n, Overlap* out) {
   using T = typename detail::kernel_scalar<decltype(Kernel)>::type;
