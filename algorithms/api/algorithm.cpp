@@ -1,5 +1,5 @@
 // What an algorithm is and the registry's bookkeeping: compiled into tritri_algorithms and,
-// again, into every build variant's module (algorithms/api/build_variant_module.cpp), which
+// again, into every second build's module (algorithms/api/build_module.cpp), which
 // fills a registry of its own.
 #include "tritri/algorithm.hpp"
 
@@ -12,6 +12,26 @@ std::string_view to_string(Scalar s) {
   return kNames[static_cast<std::size_t>(s)];
 }
 
+bool EntryPoints::has_batch(Level l, Scalar s) const {
+  bool has = false;
+  for_each_level([&](auto level) {
+    if (level() == l) has = batch<level()>(s) != nullptr;
+  });
+  return has;
+}
+
+bool EntryPoints::has_scalar(Scalar s) const {
+  for (Level l : kLevels)
+    if (has_batch(l, s)) return true;
+  return false;
+}
+
+EntryPoints EntryPoints::with_scalar_as_double(Scalar s) const {
+  EntryPoints moved;
+  for_each_level([&](auto level) { moved.set_batch<level()>(Scalar::double_, batch<level()>(s)); });
+  return moved;
+}
+
 Algorithm variant(Declaration paper, std::string name, std::string summary) {
   paper.name = std::move(name);
   paper.summary = std::move(summary);
@@ -20,13 +40,12 @@ Algorithm variant(Declaration paper, std::string name, std::string summary) {
 
 std::optional<Algorithm> Algorithm::on_scalar(Scalar s) const {
   if (s == Scalar::double_) return *this;
-  if (kind != Kind::batch || !has_scalar(s)) return std::nullopt;
+  if (!has_scalar(s)) return std::nullopt;
   Algorithm copy = *this;
   copy.name = name + "@" + std::string(to_string(s));
   copy.summary = summary + " [" + std::string(to_string(s)) + " instantiation: each pair rounded to " +
                  std::string(to_string(s)) + "]";
-  copy.table_ = {};
-  for (Level l : kLevels) copy.table_[index(l)][index(Scalar::double_)] = table_[index(l)][index(s)];
+  static_cast<EntryPoints&>(copy) = with_scalar_as_double(s);
   copy.stages.clear();
   copy.counters = {};
   return copy;

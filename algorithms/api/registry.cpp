@@ -1,5 +1,5 @@
 #include "tritri/algorithm.hpp"
-#include "algorithms/api/build_variants.hpp"
+#include "algorithms/api/builds.hpp"
 
 #include <stdexcept>
 
@@ -13,7 +13,7 @@ Registry& the_registry() {
   static Registry instance = [] {
     Registry r;
     register_builtin_algorithms(r);
-    add_build_variants(r);
+    add_builds(r);
     return r;
   }();
   return instance;

@@ -1,7 +1,6 @@
 #include "algorithms/brute/brute.hpp"
 
-#include "tritri/algorithm.hpp"
-#include "tritri/counting.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 

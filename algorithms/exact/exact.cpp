@@ -1,6 +1,6 @@
 #include "algorithms/exact/exact.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 namespace {
@@ -37,14 +37,15 @@ void register_exact(Registry& registry) {
   Algorithm simd = variant(paper, "exact",
       "exact overlap and relation: SIMD lanes of orientation signs with semi-static error bounds, "
       "a grid pass, then an exact scalar classification (integer engine)");
-  simd.set_batch<Level::overlap>(Scalar::double_, &exact::overlap_batch);
-  simd.set_batch<Level::relation>(Scalar::double_, &exact::relation_batch);
+  add_level<Level::overlap>(simd, &exact::overlap_batch, &exact::overlap);
+  add_level<Level::relation>(simd, &exact::relation_batch, &exact::relation);
   simd.counters = {&exact::reset_stats, &path_counts<true>};
   registry.add(std::move(simd));
   Algorithm scalar = variant(paper, "exact-scalar",
       "the same answers from the scalar path alone: every pair through the filtered exact classification");
-  scalar.set_batch<Level::overlap>(Scalar::double_, &overlap_scalar_batch);
-  scalar.set_batch<Level::relation>(Scalar::double_, &relation_scalar_batch);
+  // The one-pair API is the scalar path already: both entries share it.
+  add_level<Level::overlap>(scalar, &overlap_scalar_batch, &exact::overlap);
+  add_level<Level::relation>(scalar, &relation_scalar_batch, &exact::relation);
   scalar.counters = {&exact::reset_stats, &path_counts<false>};
   registry.add(std::move(scalar));
 }

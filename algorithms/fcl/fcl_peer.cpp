@@ -1,7 +1,7 @@
 // FCL's headers are included here only, so nothing else compiles against them.
 #include "algorithms/fcl/fcl_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 
@@ -23,7 +23,7 @@ void register_fcl(Registry& registry) {
                            "fcl::detail::Intersect<double>::intersect_Triangle",
                .summary = "FCL 0.7 intersect_Triangle: separating-axis test on 17 axes, strict separation (closed)"});
   // The batch loop is generated in this file, beside the kernel, so the per-pair call inlines.
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&fcl_peer::overlap>);
+  add_level<Level::overlap>(a, [](const TrianglePair& p) { return fcl_peer::overlap(p); });
   registry.add(std::move(a));
 }
 

@@ -1,7 +1,6 @@
 #include "algorithms/guigue03/guigue03.hpp"
 
-#include "tritri/algorithm.hpp"
-#include "tritri/counting.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 void register_guigue03(Registry& registry) {

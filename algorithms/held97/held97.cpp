@@ -1,7 +1,6 @@
 #include "algorithms/held97/held97.hpp"
 
-#include "tritri/algorithm.hpp"
-#include "tritri/counting.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 namespace {

@@ -1,7 +1,6 @@
 #include "algorithms/moller97/moller97.hpp"
 
-#include "tritri/algorithm.hpp"
-#include "tritri/counting.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 namespace {

@@ -1,6 +1,8 @@
 #include "algorithms/null/null.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
+
+#include <concepts>
 
 namespace tritri {
 
@@ -11,8 +13,8 @@ void register_null(Registry& registry) {
                .summary = "NOT a test: answers a bit of the XOR of the 18 coordinates' bit patterns; its check "
                           "results are meaningless",
                .accepts_degenerate = true});
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&null_floor::overlap<double>>);
-  a.set_batch<Level::overlap>(Scalar::float_, overlap_batch<&null_floor::overlap<float>>);
+  // Floating point only: it reads the coordinates' bit patterns, which the counting scalar has not.
+  add_level<Level::overlap>(a, []<std::floating_point T>(const PairT<T>& p) { return null_floor::overlap<T>(p); });
   registry.add(std::move(a));
 }
 

@@ -1,7 +1,7 @@
 // ODE's headers are included here only.
 #include "algorithms/ode/ode_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <ode/ode.h>
 
@@ -109,7 +109,7 @@ void register_ode(Registry& registry) {
                              .quantity = "|N.X+d| in float against max(|d|, min(|N|^2,|X|^2)) (OPCODE's "
                                          "gate); then 1e-8 absolute edge-plane slack in the clip",
                              .relative = true}});
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&ode_peer::overlap>);
+  add_level<Level::overlap>(a, [](const TrianglePair& p) { return ode_peer::overlap(p); });
   a.stages.push_back({.name = "rebuild", .run = stage_run<&ode_peer::overlap_rebuild>});
   a.stages.push_back({.name = "update", .run = stage_run<&ode_peer::overlap>});
   registry.add(std::move(a));

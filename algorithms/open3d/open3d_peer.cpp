@@ -1,7 +1,7 @@
 // Open3D's headers are included here only, so nothing else compiles against them.
 #include "algorithms/open3d/open3d_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <open3d/geometry/IntersectionTest.h>
 
@@ -27,7 +27,7 @@ void register_open3d(Registry& registry) {
                              .quantity = "|N.X+d| (unnormalised plane distance) after centring the six points "
                                          "and dividing each axis by its standard deviation",
                              .relative = true}});
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&open3d_peer::overlap>);
+  add_level<Level::overlap>(a, [](const TrianglePair& p) { return open3d_peer::overlap(p); });
   registry.add(std::move(a));
 }
 

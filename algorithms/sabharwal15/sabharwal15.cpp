@@ -1,7 +1,6 @@
 #include "algorithms/sabharwal15/sabharwal15.hpp"
 
-#include "tritri/algorithm.hpp"
-#include "tritri/counting.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 void register_sabharwal15(Registry& registry) {

@@ -1,7 +1,6 @@
 #include "algorithms/tropp06/tropp06.hpp"
 
-#include "tritri/algorithm.hpp"
-#include "tritri/counting.hpp"
+#include "tritri/add_level.hpp"
 
 namespace tritri {
 void register_tropp06(Registry& registry) {

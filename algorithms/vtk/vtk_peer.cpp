@@ -1,7 +1,7 @@
 // VTK's headers are included here only.
 #include "algorithms/vtk/vtk_peer.hpp"
 
-#include "tritri/algorithm.hpp"
+#include "tritri/add_level.hpp"
 
 #include <vtkIntersectionPolyDataFilter.h>
 
@@ -65,8 +65,8 @@ void register_vtk(Registry& registry) {
                              .quantity = "product of two signed distances to a unit-normal plane (early exit); "
                                          "slack on each edge parameter t",
                              .relative = false}});
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&vtk_peer::overlap>);
-  a.set_batch<Level::segment>(Scalar::double_, segment_batch<&vtk_peer::segment>);
+  add_level<Level::overlap>(a, [](const TrianglePair& p) { return vtk_peer::overlap(p); });
+  add_level<Level::segment>(a, [](const TrianglePair& p) { return vtk_peer::segment(p); });
   registry.add(std::move(a));
 }
 

@@ -9,6 +9,7 @@
 #include "harness/bench/workloads/ratio.hpp"
 #include "harness/bench/workloads/type.hpp"
 #include "algorithms/moller97/moller97.hpp"
+#include "tritri/add_level.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

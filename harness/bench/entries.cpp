@@ -2,7 +2,7 @@
 
 #include "cases/util/progress.hpp"
 #include "harness/check/judge.hpp"
-#include "harness/run/process_plugin.hpp"
+#include "harness/run/runner.hpp"
 
 #include <algorithm>
 #include <ostream>
@@ -22,31 +22,22 @@ Score score_with(const Pool& pool, const std::vector<Answer>& answers, Judge jud
   return s;
 }
 
-// The score of each level's answer type, for code generic over the level.
-Score score_answers(const Pool& pool, const std::vector<Overlap>& a) { return score_overlap(pool, a); }
-Score score_answers(const Pool& pool, const std::vector<RelationAnswer>& a) { return score_relation(pool, a); }
-Score score_answers(const Pool& pool, const std::vector<SegmentAnswer>& a) { return score_segment(pool, a); }
-
-// Runs one level of the algorithm over the pool in a child process (isolation.hpp), so that a
-// crash or a hang costs that entry, not the run.
-template <class Answer, class Batch>
-std::vector<Answer> answers_isolated(Batch batch, const Pool& pool, const IsolationOptions& isolation,
-                                     std::vector<Fault>& faults) {
-  const std::size_t n = pool.size();
-  SharedArray<Answer> shared(n);
-  faults = run_isolated(n, [&](std::size_t b, std::size_t e) { batch(pool.pairs.data() + b, e - b, shared.data() + b); },
-                        isolation);
-  return std::vector<Answer>(shared.data(), shared.data() + n);
+// The names a pool's pairs go by where a protocol quotes them.
+std::vector<std::string> pair_names(const Pool& pool) {
+  std::vector<std::string> names(pool.size());
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = "pair-" + std::to_string(i);
+  return names;
 }
 
+// Scores one level of the algorithm over the pool, run in a child process (isolation.hpp) so
+// that a crash or a hang costs that entry, not the run.
 Score score_entry(const Algorithm& a, Level level, const Pool& pool, const IsolationOptions& isolation,
                   std::vector<Fault>& faults) {
-  Score score;
-  for_each_level([&](auto l) {
-    constexpr Level L = decltype(l)::value;
-    if (L == level) score = score_answers(pool, answers_isolated<AnswerOf<L>>(a.batch<L>(), pool, isolation, faults));
-  });
-  return score;
+  RunAnswers got = run_algorithm(a, pair_names(pool), pool.pairs, {level}, isolation);
+  faults = std::move(got.faults);
+  if (level == Level::overlap) return score_overlap(pool, got.overlap);
+  if (level == Level::relation) return score_relation(pool, got.relation);
+  return score_segment(pool, got.segment);
 }
 
 std::unique_ptr<Entry> new_entry(const Algorithm* a, std::string level, const Pool& pool) {
@@ -58,12 +49,11 @@ std::unique_ptr<Entry> new_entry(const Algorithm* a, std::string level, const Po
   return e;
 }
 
-// A process plug-in answers over a pipe: its time would be the pipe's. It is checked on every
-// pool like the others, and reported, not timed.
-void process_entries(const Algorithm* a, const Pool& pool, const std::vector<Level>& levels, Entries& entries) {
-  std::vector<std::string> names(pool.size());
-  for (std::size_t i = 0; i < names.size(); ++i) names[i] = "pair-" + std::to_string(i);
-  const ProcessAnswers got = run_process_plugin({a->process.command, a->process.timeout_seconds}, names, pool.pairs);
+// An algorithm that cannot be timed (one whose answers cross a pipe: its time would be the
+// pipe's) is checked on every pool like the others, and reported, not timed.
+void untimed_entries(const Algorithm* a, const Pool& pool, const std::vector<Level>& levels,
+                     const IsolationOptions& isolation, Entries& entries) {
+  const RunAnswers got = run_algorithm(*a, pair_names(pool), pool.pairs, {Level::overlap, Level::relation}, isolation);
   for (Level level : levels) {
     if (level == Level::segment || !a->answers(level)) continue;
     auto e = new_entry(a, std::string(to_string(level)), pool);
@@ -187,8 +177,8 @@ Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup
   for (const PlannedPool& planned : pools) {
     for (const Algorithm* a : lineup.algorithms) {
       progress.update(done++);
-      if (a->kind == Algorithm::Kind::process) {
-        if (planned.levels) process_entries(a, planned.pool, levels, entries);
+      if (!a->timeable()) {
+        if (planned.levels) untimed_entries(a, planned.pool, levels, options.isolation, entries);
         continue;
       }
       if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, checks, entries);

@@ -1,6 +1,7 @@
 #include "harness/bench/timing.hpp"
 
 #include "cases/util/stats.hpp"
+#include "tritri/add_level.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -32,7 +33,7 @@ bool floor_kernel(const TrianglePair& p) {
 
 template <Level L>
 void time_level(benchmark::State& state, const Algorithm& algorithm, const TrianglePair* pairs, std::size_t n) {
-  const LevelBatch<L> batch = algorithm.batch<L>();
+  const BatchFn<L> batch = algorithm.batch<L>();
   std::array<AnswerOf<L>, kBatch> out{};
   std::uint64_t checksum = 0;
   for (auto _ : state) {

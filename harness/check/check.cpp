@@ -2,18 +2,14 @@
 
 #include "harness/check/judge.hpp"
 
-#include "harness/run/process_plugin.hpp"
-#include "cases/util/input_error.hpp"
+#include "harness/run/runner.hpp"
 #include "cases/util/stats.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <exception>
 #include <limits>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 #include <unistd.h>
 
 namespace tritri {
@@ -102,56 +98,19 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
     index.push_back(i);
     pairs.push_back(cases[i].pair);
   }
-  auto record_faults = [&](const std::vector<Fault>& faults) {
-    for (const Fault& f : faults) {
-      answers[index[f.index]].fate = f.fate;
-      answers[index[f.index]].fault = f.detail;
-    }
-  };
-
-  if (algorithm.kind == Algorithm::Kind::process) {
-    std::vector<std::string> names;
-    for (std::size_t i : index) names.push_back(cases[i].name);
-    ProcessAnswers got;
-    try {
-      got = run_process_plugin({algorithm.process.command, algorithm.process.timeout_seconds}, names, pairs);
-    } catch (const std::runtime_error& e) {
-      // The user's command broke the line protocol (or could not be run): their input, not a bug here.
-      throw InputError(e.what());
-    }
-    for (std::size_t k = 0; k < index.size(); ++k) {
-      answers[index[k]].overlap = got.overlap[k];
-      answers[index[k]].relation = got.relation[k];
-    }
-    record_faults(got.faults);
-    return answers;
+  std::vector<std::string> names;
+  for (std::size_t i : index) names.push_back(cases[i].name);
+  const RunAnswers got = run_algorithm(algorithm, names, pairs, LevelSet::all(), isolation);
+  for (const Fault& f : got.faults) {
+    answers[index[f.index]].fate = f.fate;
+    answers[index[f.index]].fault = f.detail;
   }
-
-  // The answers are written to memory shared with the child that computes them, one array per
-  // level the algorithm answers.
-  struct Shared {
-    SharedArray<Overlap> overlap;
-    SharedArray<RelationAnswer> relation;
-    SharedArray<SegmentAnswer> segment;
-  } shared{SharedArray<Overlap>(algorithm.has_batch(Level::overlap) ? pairs.size() : 0),
-           SharedArray<RelationAnswer>(algorithm.has_batch(Level::relation) ? pairs.size() : 0),
-           SharedArray<SegmentAnswer>(algorithm.has_batch(Level::segment) ? pairs.size() : 0)};
-  auto shared_of = [&]<Level L>(std::integral_constant<Level, L>) -> SharedArray<AnswerOf<L>>& {
-    if constexpr (L == Level::overlap) return shared.overlap;
-    else if constexpr (L == Level::relation) return shared.relation;
-    else return shared.segment;
-  };
-  record_faults(run_isolated(pairs.size(), [&](std::size_t begin, std::size_t end) {
-    for_each_level([&](auto level) {
-      if (const auto batch = algorithm.batch<level()>()) batch(pairs.data() + begin, end - begin, shared_of(level).data() + begin);
-    });
-  }, isolation));
   for (std::size_t k = 0; k < index.size(); ++k) {
     Answers& a = answers[index[k]];
     if (a.fate != Fate::ok) continue;
-    if (algorithm.has_batch(Level::overlap)) a.overlap = shared.overlap[k];
-    if (algorithm.has_batch(Level::relation)) a.relation = shared.relation[k];
-    if (algorithm.has_batch(Level::segment)) a.segment = shared.segment[k];
+    if (!got.overlap.empty()) a.overlap = got.overlap[k];
+    if (!got.relation.empty()) a.relation = got.relation[k];
+    if (!got.segment.empty()) a.segment = got.segment[k];
   }
   return answers;
 }

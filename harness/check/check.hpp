@@ -24,8 +24,8 @@ struct Answers {
   SegmentAnswer segment;
 };
 
-// Runs one algorithm on every case through its batch entry points. Degenerate cases are passed
-// only to algorithms that accept them.
+// Runs one algorithm on every case (harness/run/runner.hpp). Degenerate cases are passed only to
+// algorithms that accept them.
 // Built-in and shared-library algorithms run in a child process (isolation.hpp) unless
 // isolation is switched off: a crash or hang becomes that case's fate, and the rest is kept.
 std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<Case>& cases,

@@ -3,6 +3,7 @@
 #include "harness/check/check.hpp"
 #include "harness/check/check_output.hpp"
 #include "harness/check/judge.hpp"
+#include "tritri/add_level.hpp"
 
 #include <gtest/gtest.h>
 

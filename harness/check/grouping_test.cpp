@@ -2,6 +2,7 @@
 // the tallies of a grouping add up to what the family tallies say of the same cases.
 #include "harness/check/check.hpp"
 #include "harness/check/grouping.hpp"
+#include "tritri/add_level.hpp"
 
 #include <gtest/gtest.h>
 

@@ -44,9 +44,7 @@ const std::string kRunOptionsHelp =
     format_double(ProcessPluginOptions{}.timeout_seconds) + " per case for --exec)\n" +
     "  --no-isolation       run algorithms in this process (for a debugger; a crash ends the run)\n";
 
-namespace {
-
-void load_external_algorithms_as_given(const Args& args) {
+void load_external_algorithms(const Args& args) {
   for (const auto& lib : args.values("--plugin")) load_plugin(lib);
   const auto commands = args.values("--exec");
   const auto names = args.values("--exec-name");
@@ -55,20 +53,6 @@ void load_external_algorithms_as_given(const Args& args) {
   for (std::size_t i = 0; i < commands.size(); ++i) {
     const std::string name = i < names.size() ? names[i] : i == 0 ? "exec" : "exec" + std::to_string(i + 1);
     add_process_algorithm(commands[i], name, timeout);
-  }
-}
-
-}  // namespace
-
-// harness/run reports a library or command that cannot be loaded, or answers no probe, as a
-// std::runtime_error naming it; here that is the user's input (exit status 2).
-void load_external_algorithms(const Args& args) {
-  try {
-    load_external_algorithms_as_given(args);
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
   }
 }
 

@@ -1,6 +1,7 @@
 #include "harness/run/plugin.hpp"
 
 #include "tritri/plugin.h"
+#include "cases/util/input_error.hpp"
 
 #include <array>
 #include <cstddef>
@@ -66,8 +67,8 @@ std::string text(const char* s) { return s ? s : ""; }
 }  // namespace
 
 const Algorithm& load_plugin(const std::string& path) {
-  auto fail = [&](const std::string& problem) -> std::runtime_error {
-    return std::runtime_error("plug-in '" + path + "': " + problem);
+  auto fail = [&](const std::string& problem) -> InputError {
+    return InputError("plug-in '" + path + "': " + problem);
   };
   // dlopen searches the library path for a bare name; a plug-in is a file the user names.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;

@@ -8,7 +8,7 @@
 namespace tritri {
 
 // Loads the library, checks what it declares, and adds it to the registry under its own name.
-// Throws std::runtime_error naming the file and the problem.
+// Throws InputError (cases/util/input_error.hpp) naming the file and the problem: the user's library.
 const Algorithm& load_plugin(const std::string& path);
 
 }  // namespace tritri

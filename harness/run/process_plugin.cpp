@@ -3,12 +3,14 @@
 #include "cases/util/text.hpp"
 
 #include "cases/casefile.hpp"
+#include "cases/util/input_error.hpp"
 
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <map>
 #include <memory>
 #include <poll.h>
 #include <stdexcept>
@@ -124,7 +126,7 @@ ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std
   result.relation.assign(pairs.size(), RelationAnswer{});
   int relation_seen = -1;  // unknown until the first answer
   auto protocol_error = [&](std::size_t i, const std::string& line, const std::string& what) {
-    return std::runtime_error("process plug-in '" + options.command + "' answered '" + line + "' to case '" +
+    return InputError("process plug-in '" + options.command + "' answered '" + line + "' to case '" +
                               names[i] + "': " + what);
   };
 
@@ -173,26 +175,40 @@ ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std
 }  // namespace tritri
 
 namespace tritri {
+namespace {
+// By name: the registry's entries are copied (NAME@float and the like), names are unique.
+std::map<std::string, ProcessPluginOptions>& process_plugins() {
+  static std::map<std::string, ProcessPluginOptions> plugins;
+  return plugins;
+}
+}  // namespace
+
+const ProcessPluginOptions* find_process_plugin(const std::string& name) {
+  const auto& plugins = process_plugins();
+  const auto found = plugins.find(name);
+  return found == plugins.end() ? nullptr : &found->second;
+}
 
 const Algorithm& add_process_algorithm(const std::string& command, const std::string& name,
                                        double timeout_seconds) {
   if (registry().find(name))
-    throw std::runtime_error("process plug-in name '" + name + "' is already taken (choose one with --exec-name)");
+    throw InputError("process plug-in name '" + name + "' is already taken (choose one with --exec-name)");
   const Triangle floor{{Vec3<double>(0, 0, 0), Vec3<double>(1, 0, 0), Vec3<double>(0, 1, 0)}};
   const Triangle above{{Vec3<double>(0, 0, 1), Vec3<double>(1, 0, 2), Vec3<double>(0, 1, 3)}};
   const ProcessAnswers probe = run_process_plugin({command, timeout_seconds}, {"probe"}, {{floor, above}});
   if (!probe.faults.empty())
-    throw std::runtime_error("process plug-in '" + command + "' did not answer a probe case: " +
+    throw InputError("process plug-in '" + command + "' did not answer a probe case: " +
                              probe.faults.front().detail);
   Algorithm a;
   a.name = name;
   a.citation = "process plug-in: " + command;
   a.summary = "process plug-in (" + command + ")";
   a.accepts_degenerate = false;
-  a.kind = Algorithm::Kind::process;
-  a.process = Algorithm::Process{command, probe.answers_relation, timeout_seconds};
+  a.answered_elsewhere = probe.answers_relation ? LevelSet{Level::overlap, Level::relation} : LevelSet{Level::overlap};
   a.folder = "exec:" + command;
-  return add_external_algorithm(std::move(a));
+  const Algorithm& added = add_external_algorithm(std::move(a));
+  process_plugins()[name] = {command, timeout_seconds};
+  return added;
 }
 
 }  // namespace tritri

@@ -34,7 +34,8 @@ struct ProcessAnswers {
   std::vector<Fault> faults;  // cases that crashed or timed out
 };
 
-// Throws std::runtime_error on a protocol error or when the command cannot be started.
+// Throws InputError (the user's command) on a protocol error; std::runtime_error when no pipe or
+// process can be made.
 ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std::vector<std::string>& names,
                                   const std::vector<TrianglePair>& pairs);
 
@@ -43,8 +44,13 @@ ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std
 namespace tritri {
 
 // Starts the command once on a probe case to learn whether it answers the relation level, then
-// adds it to the registry as `name`. Throws std::runtime_error if it does not answer the probe.
+// adds it to the registry as `name`, answering its levels elsewhere (Algorithm::answered_elsewhere):
+// through the runner (runner.hpp), which finds it with find_process_plugin. Throws
+// InputError if it does not answer the probe.
 const Algorithm& add_process_algorithm(const std::string& command, const std::string& name,
                                        double timeout_seconds);
+
+// How to run the process plug-in added as `name`; nullptr when `name` is not one.
+const ProcessPluginOptions* find_process_plugin(const std::string& name);
 
 }  // namespace tritri

@@ -43,7 +43,7 @@ const Algorithm* registered(const std::string& name) {
   const Algorithm* a = registry().find(name);
   if (!a) {
     ADD_FAILURE() << "no algorithm named " << name << " is registered";
-  } else if (a->kind != Algorithm::Kind::batch) {
+  } else if (!a->timeable()) {
     ADD_FAILURE() << name << " is not answered through batch entry points";
     a = nullptr;
   }

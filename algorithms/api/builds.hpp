@@ -1,4 +1,4 @@
-// Build variants: the algorithms tritri compiles from source, compiled a second time with other
+// Builds: the algorithms tritri compiles from source, compiled a second time with other
 // flags into a shared module of their own, and registered beside the baseline build as
 // NAME@SUFFIX. There is one: v3fma, `-march=x86-64-v3 -ffp-contract=fast`, the build users ship
 // (AVX2, and the compiler free to fuse a*b+c into one rounding).
@@ -16,13 +16,13 @@ namespace tritri {
 // The module's one exported function (C linkage): the algorithms compiled into it, in a registry
 // of the module's own. The module is never unloaded, so the pointer and every batch entry point
 // it holds stay valid.
-using BuildVariantEntry = const Registry* (*)();
-inline constexpr const char* kBuildVariantEntry = "tritri_build_variant_registry";
+using BuildModuleEntry = const Registry* (*)();
+inline constexpr const char* kBuildModuleEntry = "tritri_build_registry";
 
 // Loads the v3fma module when the CPU can run it and adds its algorithms to `registry`, each
 // named NAME@v3fma, in the folder of its baseline build. When it cannot (a CPU without AVX2 and
 // FMA, the module missing, TRITRI_V3FMA=off), writes one line on stderr saying why and adds
 // nothing: the baseline build is complete without it.
-void add_build_variants(Registry& registry);
+void add_builds(Registry& registry);
 
 }  // namespace tritri

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# What the build variants (build_variants.hpp) promise about the machine code:
+# What the second build (builds.hpp) promises about the machine code:
 #   - the baseline build of the algorithms has no fused multiply-add instruction: its
 #     -ffp-contract=off (top-level CMakeLists.txt) holds in every library it links;
 #   - the v3fma module has some where contraction is possible, in Möller's overlap test on
 #     double among others (its plane distances and interval ends are sums of products);
 #   - the module exports its entry point alone and asks the program for no tritri symbol, so
 #     neither build's templates can be bound to the other's copy at load time.
-# Usage: build_variants_test.sh MODULE BASELINE_LIBRARY...
+# Usage: builds_test.sh MODULE BASELINE_LIBRARY...
 set -euo pipefail
 module=$1
 shift
@@ -34,7 +34,7 @@ echo "v3fma module: $total FMA instructions, $moller in moller97::overlap<double
 
 # (A sanitizer build adds its runtime's hooks: not tritri's.)
 exported=$(nm -D --defined-only "$module" | awk '{ print $NF }' | grep -vE '^_+(odr_)?(asan|ubsan|sancov|sanitizer)' || true)
-if [ "$exported" != tritri_build_variant_registry ]; then
+if [ "$exported" != tritri_build_registry ]; then
   echo "FAIL: the module exports more than its entry point:" >&2
   head -n 10 <<<"$exported" >&2
   status=1

@@ -1,4 +1,4 @@
-#include "algorithms/api/build_variants.hpp"
+#include "algorithms/api/builds.hpp"
 
 #include <cstdlib>
 #include <dlfcn.h>
@@ -57,9 +57,9 @@ const Registry* load_module(std::string& why) {
     why = dlerror();
     return nullptr;
   }
-  auto entry = reinterpret_cast<BuildVariantEntry>(dlsym(handle, kBuildVariantEntry));
+  auto entry = reinterpret_cast<BuildModuleEntry>(dlsym(handle, kBuildModuleEntry));
   if (!entry) {
-    why = path.string() + " does not export " + kBuildVariantEntry;
+    why = path.string() + " does not export " + kBuildModuleEntry;
     return nullptr;
   }
   return entry();
@@ -68,7 +68,7 @@ const Registry* load_module(std::string& why) {
 
 }  // namespace
 
-void add_build_variants(Registry& registry) {
+void add_builds(Registry& registry) {
 #ifdef TRITRI_V3FMA_MODULE
   std::string why;
   const Registry* module = load_module(why);
