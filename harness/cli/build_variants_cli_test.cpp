@@ -1,4 +1,4 @@
-// The v3fma build (NAME@v3fma, algorithms/api/build_variants.hpp) as a user meets it: NAME@v3fma beside each
+// The v3fma build (NAME@v3fma, algorithms/api/builds.hpp) as a user meets it: NAME@v3fma beside each
 // port in list, check, bench and diff; none for the library peers; one line saying why when it
 // is not loaded. The tests that need the module loaded skip on a CPU that cannot run it.
 #include "harness/testing/tritri_runner.hpp"

@@ -12,11 +12,12 @@ repository (`algorithms/exact/README.md`, `.ci/run`) or a folder beside the file
 (`generator/families.cpp` in cases/README.md, `workloads/scene.cpp` in harness/bench/). It may
 end in `:LINE` or `:FIRST-LAST`, and the file must then have that many lines. A token with
 `*` is a glob and must match something; one with a placeholder (`<`, `>`, `{`, `}`, `...`, or
-a component in capitals such as `FOLDER`) is not a path. A leading `./` and a sentence's final
+a component in capitals such as `FOLDER`, or a capitalised word after `_` or `-` in a
+component, such as `cmd_NAME.cpp`) is not a path. A leading `./` and a sentence's final
 `.` or `,` are not part of it. URLs (`://`) and build outputs (`build/`) are not checked.
 
 A heading cited by name, `FILE.md, "Heading"` (the quotes may be backslash-escaped in code),
-must be the start of a heading in that file.
+must be the start of a heading in that file (backquotes aside, in both).
 """
 
 import ast
@@ -85,7 +86,8 @@ def resolve(token, citing):
     while token.startswith("./"):
         token = token[2:]
     if "://" in token or "/" not in token or re.search(r"[<>{}]|\.\.\.", token) \
-            or any(re.fullmatch(r"[A-Z][A-Z_]+", part) for part in token.split("/")):
+            or any(re.fullmatch(r"[A-Z][A-Z_]+", part) or re.search(r"[_-][A-Z]{2,}(?![a-z])", part)
+                   for part in token.split("/")):
         return None
     first = token.split("/", 1)[0]
     here = os.path.dirname(citing)
@@ -138,7 +140,7 @@ def stale_references(files):
             target = m.group(1)
             name = resolve(target, path) if "/" in target else os.path.join(os.path.dirname(path), target)
             if name and os.path.isfile(os.path.join(ROOT, name)) and \
-                    not any(h.startswith(m.group(2)) for h in headings(name)):
+                    not any(h.startswith(m.group(2).replace("`", "")) for h in headings(name)):
                 problems.append('%s: cites "%s" in %s, which has no such heading' % (path, m.group(2), name))
     return problems
 

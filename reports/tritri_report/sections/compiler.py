@@ -1,6 +1,6 @@
 """What the compiler changes: every port tritri compiles from source, built a second time for
 x86-64-v3 with FMA contraction allowed (`-march=x86-64-v3 -ffp-contract=fast`, registered as
-NAME@v3fma: algorithms/api/build_variants.hpp), set beside its baseline build (`-ffp-contract=off`).
+NAME@v3fma: algorithms/api/builds.hpp), set beside its baseline build (`-ffp-contract=off`).
 
 Read from two files the main job writes: compiler-diff.json (`tritri diff --oracle --pair
 NAME=NAME@v3fma ...` on the corpus, schema tritri-diff/1 with the oracle's judgement per family)
