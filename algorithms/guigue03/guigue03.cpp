@@ -3,6 +3,10 @@
 #include "tritri/add_level.hpp"
 
 namespace tritri {
+namespace guigue03::lanes_kernel {
+void register_lanes(Registry& registry, Algorithm variant);  // lanes.cpp
+}
+
 void register_guigue03(Registry& registry) {
   // Closed; no tolerance: every decision is the sign of a determinant.
   const Declaration paper{.citation = "Philippe Guigue, Olivier Devillers. Fast and Robust Triangle-Triangle Overlap Test Using "
@@ -18,6 +22,8 @@ void register_guigue03(Registry& registry) {
   add_level<Level::overlap>(with_segment, []<class T>(const PairT<T>& p) { return guigue03::overlap_with_segment<T>(p); });
   add_level<Level::segment>(with_segment, []<class T>(const PairT<T>& p) { return guigue03::segment<T>(p); });
   registry.add(std::move(with_segment));
+  guigue03::lanes_kernel::register_lanes(registry, variant(paper, "guigue03-lanes",
+      "the published overlap test on SIMD lanes of pairs (lanes.cpp): the port's answers, bit for bit"));
 }
 
 }  // namespace tritri

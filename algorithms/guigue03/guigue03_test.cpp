@@ -13,6 +13,7 @@
 
 TRITRI_ALGORITHM_CONFORMANCE(Guigue03, "guigue03", exact)
 TRITRI_ALGORITHM_CONFORMANCE(Guigue03Segment, "guigue03-segment", exact)
+TRITRI_ALGORITHM_CONFORMANCE(Guigue03Lanes, "guigue03-lanes", exact)  // the port on lanes: algorithms/lanes
 
 namespace tritri::guigue03 {
 namespace {

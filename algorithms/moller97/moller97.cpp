@@ -3,6 +3,10 @@
 #include "tritri/add_level.hpp"
 
 namespace tritri {
+namespace moller97::lanes_kernel {
+void register_lanes(Registry& registry, Algorithm variant);  // lanes.cpp
+}
+
 namespace {
 
 
@@ -29,6 +33,8 @@ void register_moller97(Registry& registry) {
       variant_with("moller97", "the published test: interval overlap with divisions, EPSILON snap", true);
   add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return overlap<T, true>(p); });
   registry.add(std::move(published));
+  moller97::lanes_kernel::register_lanes(registry, variant_with("moller97-lanes",
+      "the published test on SIMD lanes of pairs (lanes.cpp): the port's answers, bit for bit", true));
 
   Algorithm exact_zero = variant_with(
       "moller97-nosnap", "the published test without the EPSILON snap (exact-zero comparisons)", false);

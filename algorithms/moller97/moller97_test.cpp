@@ -17,6 +17,7 @@ TRITRI_ALGORITHM_CONFORMANCE(Moller97, "moller97", general_position)
 TRITRI_ALGORITHM_CONFORMANCE(Moller97Nosnap, "moller97-nosnap", general_position)
 TRITRI_ALGORITHM_CONFORMANCE(Moller97Nodiv, "moller97-nodiv", exact)
 TRITRI_ALGORITHM_CONFORMANCE(Moller97Segment, "moller97-segment", general_position)
+TRITRI_ALGORITHM_CONFORMANCE(Moller97Lanes, "moller97-lanes", general_position)  // the port on lanes: algorithms/lanes
 
 namespace tritri::moller97 {
 namespace {
