@@ -39,6 +39,14 @@ Kind kind_of(const Json& doc, const std::string& path) {
   throw std::runtime_error(path + ": neither a 'tritri check --json' result nor a benchmark result");
 }
 
+// A `tritri bench` file from before the mode was an axis (no "schema" in its "tritri" section)
+// timed every benchmark in batch mode, under a name without the mode: named as now, it is compared
+// with the batch-mode benchmarks of a newer file, and with nothing timed one pair per call.
+std::string name_with_mode(const Json& doc, const std::string& name) {
+  const bool before_modes = doc.contains("tritri") && doc["tritri"].is_object() && !doc["tritri"].contains("schema");
+  return before_modes ? name + "/batch" : name;
+}
+
 // Per benchmark, the time per item of every repetition, in seconds.
 std::map<std::string, std::vector<double>> repetitions(const Json& doc) {
   std::map<std::string, std::vector<double>> out;
@@ -46,7 +54,7 @@ std::map<std::string, std::vector<double>> repetitions(const Json& doc) {
   for (const auto& b : doc["benchmarks"]) {
     if (b.value("run_type", "iteration") != "iteration") continue;
     if (b.contains("error_occurred") && b["error_occurred"].get<bool>()) continue;
-    const std::string name = b.value("run_name", b.value("name", ""));
+    const std::string name = name_with_mode(doc, b.value("run_name", b.value("name", "")));
     double seconds;
     if (b.contains("items_per_second") && b["items_per_second"].get<double>() > 0) {
       seconds = 1.0 / b["items_per_second"].get<double>();
