@@ -61,12 +61,7 @@ def heatmap(rows, cols, values, counts, path, title, colorbar_label="error rate"
     _save(fig, path)
 
 
-def pareto(points, frontier, path, xlabel, ylabel):
-    """points: [(name, x ns, y rate)]; frontier: the names on the Pareto frontier."""
-    fig, ax = plt.subplots(figsize=(8.5, 5.5))
-    ys = [p[2] for p in points]
-    positive = [y for y in ys if y > 0]
-    floor = (min(positive) if positive else 1e-3) / 4
+def _pareto_axes(ax, points, frontier, floor):
     for i, (name, x, y) in enumerate(points):
         st = _style(i)
         yy = y if y > 0 else floor
@@ -87,28 +82,43 @@ def pareto(points, frontier, path, xlabel, ylabel):
     ax.set_yscale("log")
     ax.axhline(floor, color="#999999", linewidth=0.6)
     ax.text(ax.get_xlim()[0], floor, " no errors", va="bottom", fontsize=7, color="#666666")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
     ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+
+
+def pareto_panels(panels, path, xlabel, ylabel):
+    """panels: [(title, [(name, x ns, y rate)], the names on its Pareto frontier)], side by side."""
+    n = max(1, len(panels))
+    fig, axes = plt.subplots(1, n, figsize=(7 * n + 2, 5.5), sharey=True, squeeze=False)
+    ys = [p[2] for _, points, _ in panels for p in points]
+    positive = [y for y in ys if y > 0]
+    floor = (min(positive) if positive else 1e-3) / 4
+    for ax, (title, points, frontier) in zip(axes[0], panels):
+        _pareto_axes(ax, points, frontier, floor)
+        ax.set_title(title, fontsize=10)
+        ax.set_xlabel(xlabel)
+    axes[0][0].set_ylabel(ylabel)
+    axes[0][-1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     _save(fig, path)
 
 
-def ratio_lines(series, marks, path, xlabel, ylabel):
-    """series: {name: [(R, ns)]}; marks: [(R, ns, text)] drawn as labelled points."""
-    fig, ax = plt.subplots(figsize=(9, 5.5))
-    for i, (name, pts) in enumerate(series.items()):
-        st = _style(i)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], label=name, color=st["color"],
-                marker=st["marker"], markersize=4, linestyle=st["linestyle"], linewidth=1.2)
-    for r, t, text in marks:
-        ax.plot([r], [t], marker="o", markersize=11, markerfacecolor="none", markeredgecolor="red")
-        ax.annotate(text, (r, t), textcoords="offset points", xytext=(6, -12), fontsize=7, color="red")
-    ax.set_yscale("log")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+def ratio_panels(panels, path, xlabel, ylabel):
+    """panels: [(title, {name: [(R, ns)]}, marks)]: one axes per mode, side by side, shared y."""
+    n = max(1, len(panels))
+    fig, axes = plt.subplots(1, n, figsize=(6.5 * n + 2, 5.5), sharey=True, squeeze=False)
+    for ax, (title, series, marks) in zip(axes[0], panels):
+        for i, (name, pts) in enumerate(series.items()):
+            st = _style(i)
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], label=name, color=st["color"],
+                    marker=st["marker"], markersize=4, linestyle=st["linestyle"], linewidth=1.2)
+        for r, t, text in marks:
+            ax.plot([r], [t], marker="o", markersize=11, markerfacecolor="none", markeredgecolor="red")
+            ax.annotate(text, (r, t), textcoords="offset points", xytext=(6, -12), fontsize=7, color="red")
+        ax.set_yscale("log")
+        ax.set_title(title, fontsize=10)
+        ax.set_xlabel(xlabel)
+        ax.grid(True, which="both", alpha=0.25)
+    axes[0][0].set_ylabel(ylabel)
+    axes[0][-1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     _save(fig, path)
 
 
