@@ -2,6 +2,7 @@
 #include "algorithms/open3d/open3d_peer.hpp"
 
 #include "tritri/algorithm.hpp"
+#include "tritri/pair_function.hpp"
 
 #include <open3d/geometry/IntersectionTest.h>
 
@@ -27,8 +28,7 @@ void register_open3d(Registry& registry) {
                              .quantity = "|N.X+d| (unnormalised plane distance) after centring the six points "
                                          "and dividing each axis by its standard deviation",
                              .relative = true}});
-  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&open3d_peer::overlap>);
-  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &open3d_peer::overlap>);
+  add_level_function<Level::overlap, &open3d_peer::overlap>(a);
   registry.add(std::move(a));
 }
 
