@@ -539,6 +539,37 @@ class Reference(unittest.TestCase):
         self.assertEqual(data.relative_to_reference({"relative_to_reference": 2.0}), 2.0)
 
 
+class LegibleFigures(unittest.TestCase):
+    """Every figure, drawn from the fixture, keeps each axes to a number of series one can tell
+    apart (the Okabe-Ito palette has eight colours): more go into panels by group (kinds.py)."""
+    MAX_SERIES = 8
+
+    @staticmethod
+    def series_in(ax):
+        named = [x for x in list(ax.get_lines()) + list(ax.collections) if not x.get_label().startswith("_")]
+        return len(named)
+
+    def test_no_axes_draws_more_series_than_can_be_told_apart(self):
+        from tritri_report import figures
+        counts, real = {}, figures._save
+
+        def counting(fig, path):
+            counts[os.path.basename(path)] = max([self.series_in(ax) for ax in fig.axes] + [0])
+            real(fig, path)
+        figures._save = counting
+        out = tempfile.mkdtemp()
+        try:
+            report.build_report(FIXTURE, out)
+        finally:
+            figures._save = real
+            shutil.rmtree(out)
+        self.assertIn("time-ratio.png", counts)
+        self.assertIn("speed-error.png", counts)
+        self.assertGreater(counts["time-ratio.png"], 1)  # the count sees the series it limits
+        for name, n in counts.items():
+            self.assertLessEqual(n, self.MAX_SERIES, name)
+
+
 class Sections(unittest.TestCase):
     def test_a_section_is_a_title_and_a_render_function(self):
         import types

@@ -3,7 +3,7 @@ pools of one intersection type or one corpus family."""
 
 from collections import OrderedDict
 
-from .. import analysis, data, figures
+from .. import analysis, data, figures, kinds
 from ..markdown import NOT_MEASURED, ns, table
 from . import summary
 
@@ -11,14 +11,14 @@ TITLE = "Time against intersection ratio"
 
 
 def published_marks(run, series):
-    """Crossings a paper published a break-even for: ([(R, ns, label)], the sentence naming them)."""
+    """Crossings a paper published a break-even for: ([(R, ns, label, {a, b})], the sentence naming them)."""
     marks, names = [], []
     for a, b, what in run.published_crossings():
         if a not in series or b not in series:
             continue
         names.append("%s and %s%s" % (a, b, " (%s)" % what if what else ""))
         for r, t, _ in analysis.crossings(series[a], series[b]):
-            marks.append((r, t, "%s=%s @%.2f" % (a, b, r)))
+            marks.append((r, t, "%s=%s @%.2f" % (a, b, r), {a, b}))
     return marks, "".join(", and where %s cross" % n for n in names)
 
 
@@ -44,15 +44,16 @@ def render(run, part):
     for mode, (series, spreads) in per_mode.items():
         envs[mode] = analysis.envelope_changes({a: p for a, p in series.items() if a not in run.floors})
         marks, also = published_marks(run, series)
-        marks = [(r, t, "%s→%s @%.2f" % (a, b, r)) for r, t, a, b in envs[mode]] + marks
-        panels.append(("%s mode" % mode, series, marks))
+        marks = [(r, t, "%s→%s @%.2f" % (a, b, r), {a, b}) for r, t, a, b in envs[mode]] + marks
+        panels.append((mode, group_panels(run, series, marks)))
     fig = part.figure("time-ratio.png", figures.ratio_panels, panels,
                       xlabel="intersection ratio R (share of the pool's pairs that intersect)",
                       ylabel="ns per pair (median, log scale)")
     pool = (run.bench.get("context", {}) or {}).get("pool_size", "?")
     part.add("Median ns per pair on pools of %s distinct pairs of which exactly R intersect, each algorithm "
-             "at its first level, %s, on %s (lane algorithms on %s). Red circles: break-even points where "
-             "the fastest algorithm changes%s.\n"
+             "at its first level, %s, on %s (lane algorithms on %s); one panel per group of algorithms and "
+             "mode, each line named at its end. Red circles: break-even points where the fastest algorithm "
+             "changes%s (listed below).\n"
              % (pool, summary.mode_words(run.modes), run.cpu, run.isa, also))
     part.add("![time against intersection ratio](%s)\n" % fig)
     rs = [r for r, _ in data.ratio_workloads(run.bench)]
@@ -74,6 +75,17 @@ def render(run, part):
                  for row in reference_crossings(run, series, spreads, mode)]
     part.add(table(["pair", "mode", "R", "ns/pair", "note"], pair_rows) if pair_rows else "None.\n")
     other_workloads(run, part)
+
+
+def group_panels(run, series, marks):
+    """[(group, its series, the marks of its algorithms)] (kinds.py); the floor `null` beside
+    the published ports, as the line every other lies above."""
+    out = []
+    for group, names in kinds.split(run, [a for a in series if a not in run.floors]):
+        shown = names + ([f for f in series if f in run.floors] if group == kinds.GROUPS[0] else [])
+        out.append((group, OrderedDict((a, series[a]) for a in shown),
+                    [(r, t, text) for r, t, text, who in marks if who & set(names)]))
+    return out
 
 
 def all_names(per_mode):
