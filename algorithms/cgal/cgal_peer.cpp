@@ -1,7 +1,6 @@
 #include "algorithms/cgal/cgal_peer.hpp"
 
 #include "tritri/algorithm.hpp"
-#include "tritri/pair_function.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
@@ -30,7 +29,8 @@ void register_cgal(Registry& registry) {
                .citation = "The CGAL Project. CGAL User and Reference Manual, 5.5: 3D Intersections, "
                            "CGAL::do_intersect(Triangle_3, Triangle_3), kernel Epick. https://doc.cgal.org/5.5/",
                .summary = "CGAL do_intersect on Epick: exact filtered predicates (closed, no tolerance)"});
-  add_level_function<Level::overlap, &cgal_peer::overlap>(a);
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&cgal_peer::overlap>);
+  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &cgal_peer::overlap>);
   registry.add(std::move(a));
 }
 

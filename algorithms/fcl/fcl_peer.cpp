@@ -2,7 +2,6 @@
 #include "algorithms/fcl/fcl_peer.hpp"
 
 #include "tritri/algorithm.hpp"
-#include "tritri/pair_function.hpp"
 
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 
@@ -24,7 +23,8 @@ void register_fcl(Registry& registry) {
                            "fcl::detail::Intersect<double>::intersect_Triangle",
                .summary = "FCL 0.7 intersect_Triangle: separating-axis test on 17 axes, strict separation (closed)"});
   // The batch loop is generated in this file, beside the kernel, so the per-pair call inlines.
-  add_level_function<Level::overlap, &fcl_peer::overlap>(a);
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&fcl_peer::overlap>);
+  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &fcl_peer::overlap>);
   registry.add(std::move(a));
 }
 

@@ -1,7 +1,6 @@
 #include "algorithms/null/null.hpp"
 
 #include "tritri/algorithm.hpp"
-#include "tritri/pair_function.hpp"
 
 namespace tritri {
 
@@ -12,7 +11,8 @@ void register_null(Registry& registry) {
                .summary = "NOT a test: answers a bit of the XOR of the 18 coordinates' bit patterns; its check "
                           "results are meaningless",
                .accepts_degenerate = true});
-  add_level_function<Level::overlap, &null_floor::overlap<double>>(a);
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&null_floor::overlap<double>>);
+  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &null_floor::overlap<double>>);
   a.set_batch<Level::overlap>(Scalar::float_, overlap_batch<&null_floor::overlap<float>>);
   registry.add(std::move(a));
 }

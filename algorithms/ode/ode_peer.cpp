@@ -2,7 +2,6 @@
 #include "algorithms/ode/ode_peer.hpp"
 
 #include "tritri/algorithm.hpp"
-#include "tritri/pair_function.hpp"
 
 #include <ode/ode.h>
 
@@ -110,7 +109,8 @@ void register_ode(Registry& registry) {
                              .quantity = "|N.X+d| in float against max(|d|, min(|N|^2,|X|^2)) (OPCODE's "
                                          "gate); then 1e-8 absolute edge-plane slack in the clip",
                              .relative = true}});
-  add_level_function<Level::overlap, &ode_peer::overlap>(a);
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&ode_peer::overlap>);
+  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &ode_peer::overlap>);
   a.stages.push_back({.name = "rebuild", .run = stage_run<&ode_peer::overlap_rebuild>});
   a.stages.push_back({.name = "update", .run = stage_run<&ode_peer::overlap>});
   registry.add(std::move(a));

@@ -2,7 +2,6 @@
 #include "algorithms/open3d/open3d_peer.hpp"
 
 #include "tritri/algorithm.hpp"
-#include "tritri/pair_function.hpp"
 
 #include <open3d/geometry/IntersectionTest.h>
 
@@ -28,7 +27,8 @@ void register_open3d(Registry& registry) {
                              .quantity = "|N.X+d| (unnormalised plane distance) after centring the six points "
                                          "and dividing each axis by its standard deviation",
                              .relative = true}});
-  add_level_function<Level::overlap, &open3d_peer::overlap>(a);
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&open3d_peer::overlap>);
+  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &open3d_peer::overlap>);
   registry.add(std::move(a));
 }
 

@@ -2,7 +2,6 @@
 #include "algorithms/vtk/vtk_peer.hpp"
 
 #include "tritri/algorithm.hpp"
-#include "tritri/pair_function.hpp"
 
 #include <vtkIntersectionPolyDataFilter.h>
 
@@ -66,8 +65,10 @@ void register_vtk(Registry& registry) {
                              .quantity = "product of two signed distances to a unit-normal plane (early exit); "
                                          "slack on each edge parameter t",
                              .relative = false}});
-  add_level_function<Level::overlap, &vtk_peer::overlap>(a);
-  add_level_function<Level::segment, &vtk_peer::segment>(a);
+  a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&vtk_peer::overlap>);
+  a.set_one_pair<Level::overlap>(&vtk_peer::overlap);
+  a.set_batch<Level::segment>(Scalar::double_, segment_batch<&vtk_peer::segment>);
+  a.set_one_pair<Level::segment>(&vtk_peer::segment);
   registry.add(std::move(a));
 }
 
