@@ -26,7 +26,6 @@ std::optional<Algorithm> Algorithm::on_scalar(Scalar s) const {
   copy.summary = summary + " [" + std::string(to_string(s)) + " instantiation: each pair rounded to " +
                  std::string(to_string(s)) + "]";
   copy.table_ = {};
-  copy.one_pair_ = {};  // the one-pair entries are on double
   for (Level l : kLevels) copy.table_[index(l)][index(Scalar::double_)] = table_[index(l)][index(s)];
   copy.stages.clear();
   copy.counters = {};

@@ -60,7 +60,6 @@ void register_bullet(Registry& registry) {
                                 "find_triangle_collision_clip_method, margin 0.01 each (as shipped), float",
                      .tolerance = {.value = 0.02, .quantity = kMarginQuantity, .relative = false}});
   gimpact.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&bullet_peer::gimpact_default>);
-  gimpact.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &bullet_peer::gimpact_default>);
   registry.add(std::move(gimpact));
 
   Algorithm m0({.name = "bullet-gimpact-m0",
@@ -70,7 +69,6 @@ void register_bullet(Registry& registry) {
                               .quantity = "distance outside an edge plane in the clip (FLT_EPSILON)",
                               .relative = false}});
   m0.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&bullet_peer::gimpact_margin0>);
-  m0.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &bullet_peer::gimpact_margin0>);
   registry.add(std::move(m0));
 
   Algorithm gim({.name = "bullet-gim-triangle",
@@ -78,7 +76,6 @@ void register_bullet(Registry& registry) {
                  .summary = "Bullet 3.24 GIM_TRIANGLE::collide_triangle, margin 0.1 each (its default), float",
                  .tolerance = {.value = 0.2, .quantity = kMarginQuantity, .relative = false}});
   gim.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&bullet_peer::gim_triangle_default>);
-  gim.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &bullet_peer::gim_triangle_default>);
   registry.add(std::move(gim));
 }
 

@@ -30,7 +30,6 @@ void register_cgal(Registry& registry) {
                            "CGAL::do_intersect(Triangle_3, Triangle_3), kernel Epick. https://doc.cgal.org/5.5/",
                .summary = "CGAL do_intersect on Epick: exact filtered predicates (closed, no tolerance)"});
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&cgal_peer::overlap>);
-  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &cgal_peer::overlap>);
   registry.add(std::move(a));
 }
 

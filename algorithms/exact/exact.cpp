@@ -39,16 +39,12 @@ void register_exact(Registry& registry) {
       "a grid pass, then an exact scalar classification (integer engine)");
   simd.set_batch<Level::overlap>(Scalar::double_, &exactsimd::overlap_batch);
   simd.set_batch<Level::relation>(Scalar::double_, &exactsimd::relation_batch);
-  simd.set_one_pair<Level::overlap>(&exactsimd::overlap);
-  simd.set_one_pair<Level::relation>(&exactsimd::relation);
   simd.counters = {&exactsimd::reset_stats, &path_counts<true>};
   registry.add(std::move(simd));
   Algorithm scalar = variant(paper, "exact-scalar",
       "the same answers from the scalar path alone: every pair through the filtered exact classification");
   scalar.set_batch<Level::overlap>(Scalar::double_, &overlap_scalar_batch);
   scalar.set_batch<Level::relation>(Scalar::double_, &relation_scalar_batch);
-  scalar.set_one_pair<Level::overlap>(&exactsimd::overlap);
-  scalar.set_one_pair<Level::relation>(&exactsimd::relation);
   scalar.counters = {&exactsimd::reset_stats, &path_counts<false>};
   registry.add(std::move(scalar));
 }

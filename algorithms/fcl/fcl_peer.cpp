@@ -24,7 +24,6 @@ void register_fcl(Registry& registry) {
                .summary = "FCL 0.7 intersect_Triangle: separating-axis test on 17 axes, strict separation (closed)"});
   // The batch loop is generated in this file, beside the kernel, so the per-pair call inlines.
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&fcl_peer::overlap>);
-  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &fcl_peer::overlap>);
   registry.add(std::move(a));
 }
 

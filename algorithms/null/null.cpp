@@ -12,7 +12,6 @@ void register_null(Registry& registry) {
                           "results are meaningless",
                .accepts_degenerate = true});
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&null_floor::overlap<double>>);
-  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &null_floor::overlap<double>>);
   a.set_batch<Level::overlap>(Scalar::float_, overlap_batch<&null_floor::overlap<float>>);
   registry.add(std::move(a));
 }

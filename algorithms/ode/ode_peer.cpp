@@ -110,7 +110,6 @@ void register_ode(Registry& registry) {
                                          "gate); then 1e-8 absolute edge-plane slack in the clip",
                              .relative = true}});
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&ode_peer::overlap>);
-  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &ode_peer::overlap>);
   a.stages.push_back({.name = "rebuild", .run = stage_run<&ode_peer::overlap_rebuild>});
   a.stages.push_back({.name = "update", .run = stage_run<&ode_peer::overlap>});
   registry.add(std::move(a));

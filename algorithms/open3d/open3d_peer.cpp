@@ -28,7 +28,6 @@ void register_open3d(Registry& registry) {
                                          "and dividing each axis by its standard deviation",
                              .relative = true}});
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&open3d_peer::overlap>);
-  a.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &open3d_peer::overlap>);
   registry.add(std::move(a));
 }
 

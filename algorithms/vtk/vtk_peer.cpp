@@ -66,9 +66,7 @@ void register_vtk(Registry& registry) {
                                          "slack on each edge parameter t",
                              .relative = false}});
   a.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&vtk_peer::overlap>);
-  a.set_one_pair<Level::overlap>(&vtk_peer::overlap);
   a.set_batch<Level::segment>(Scalar::double_, segment_batch<&vtk_peer::segment>);
-  a.set_one_pair<Level::segment>(&vtk_peer::segment);
   registry.add(std::move(a));
 }
 

@@ -58,9 +58,6 @@ using RelationBatch = BatchFn<RelationAnswer>;
 using SegmentBatch = BatchFn<SegmentAnswer>;
 template <Level L>
 using LevelBatch = BatchFn<AnswerOf<L>>;
-// One pair on double, out of line: what `tritri bench --mode call` times.
-template <Level L>
-using PairFn = AnswerOf<L> (*)(const TrianglePair&);
 
 inline constexpr Level kLevels[] = {Level::overlap, Level::relation, Level::segment};
 
@@ -169,15 +166,6 @@ struct Algorithm {
   void set_batch(Scalar s, LevelBatch<L> fn) {
     table_[index(L)][index(s)] = reinterpret_cast<Erased>(fn);
   }
-  // The one-pair entry point of level L on double; nullptr when it has none.
-  template <Level L>
-  PairFn<L> one_pair() const {
-    return reinterpret_cast<PairFn<L>>(one_pair_[index(L)]);
-  }
-  template <Level L>
-  void set_one_pair(PairFn<L> fn) {
-    one_pair_[index(L)] = reinterpret_cast<Erased>(fn);
-  }
   bool has_batch(Level l, Scalar s = Scalar::double_) const { return table_[index(l)][index(s)] != nullptr; }
   bool has_scalar(Scalar s) const {
     for (Level l : kLevels)
@@ -203,7 +191,6 @@ struct Algorithm {
   static constexpr std::size_t index(Level l) { return static_cast<std::size_t>(l); }
   static constexpr std::size_t index(Scalar s) { return static_cast<std::size_t>(s); }
   std::array<std::array<Erased, 3>, 3> table_{};  // [level][scalar]
-  std::array<Erased, 3> one_pair_{};              // [level], double
 };
 
 // Adapters from a per-pair kernel to a batch entry point. A kernel takes `const PairT<T>&` for
@@ -243,12 +230,6 @@ void kernel_batch(const TrianglePair* pairs, std::size_t n, AnswerOf<L>* out) {
   for (std::size_t i = 0; i < n; ++i) out[i] = to_answer<AnswerOf<L>>(call_on<T>(kernel, pairs[i]));
 }
 
-// The same kernel on one pair, out of line.
-template <Level L, class T, class Kernel>
-AnswerOf<L> kernel_one_pair(const TrianglePair& pair) {
-  return to_answer<AnswerOf<L>>(call_on<T>(Kernel{}, pair));
-}
-
 template <auto Fn>
 struct FunctionKernel {
   template <class P>
@@ -276,12 +257,6 @@ void segment_batch(const TrianglePair* pairs, std::size_t n, SegmentAnswer* out)
   detail::kernel_batch<Level::segment, T, detail::FunctionKernel<Kernel>>(pairs, n, out);
 }
 
-// A level's one-pair entry point from a per-pair function on double.
-template <Level L, auto Fn>
-AnswerOf<L> one_pair_of(const TrianglePair& pair) {
-  return detail::kernel_one_pair<L, double, detail::FunctionKernel<Fn>>(pair);
-}
-
 // Registers level L of a port templated on its scalar, in one line: `Kernel` is a stateless
 // generic lambda taking `const PairT<T>&`, e.g.
 //   add_level<Level::overlap>(a, []<class T>(const PairT<T>& p) { return overlap<T, true>(p); });
@@ -291,13 +266,11 @@ void add_level(Algorithm& a, Kernel) {
   a.set_batch<L>(Scalar::double_, &detail::kernel_batch<L, double, Kernel>);
   a.set_batch<L>(Scalar::float_, &detail::kernel_batch<L, float, Kernel>);
   a.set_batch<L>(Scalar::counted, &detail::kernel_batch<L, Counted, Kernel>);
-  a.set_one_pair<L>(&detail::kernel_one_pair<L, double, Kernel>);
 }
 // The same on double alone, for tests that call a library on double (FCL, CGAL).
 template <Level L, class Kernel>
 void add_level_double(Algorithm& a, Kernel) {
   a.set_batch<L>(Scalar::double_, &detail::kernel_batch<L, double, Kernel>);
-  a.set_one_pair<L>(&detail::kernel_one_pair<L, double, Kernel>);
 }
 
 // Folds an answer (or any value a stage computes) into a 64-bit checksum term: cheap, and
