@@ -24,10 +24,11 @@
 #include "algorithms/exact/detail/scalar.hpp"
 #include "algorithms/exact/detail/simd.hpp"
 #include "tritri/answers.hpp"
+#include "tritri/isa.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 
 namespace tritri::exact {
@@ -62,17 +63,11 @@ inline Isa detected_isa() {
 #endif
 }
 
-// The instruction set the batch entry points use: the detected one, or TRITRI_EXACT_ISA
-// (scalar, sse2, avx2, avx512) when set to one this machine supports.
+// The instruction set the batch entry points use: the detected one, or the narrower one the
+// environment asks every lane algorithm for (TRITRI_ISA, tritri/isa.hpp; same names and order).
 inline Isa active_isa() {
-  static const Isa isa = [] {
-    const Isa best = detected_isa();
-    if (const char* env = std::getenv("TRITRI_EXACT_ISA")) {
-      for (Isa i : {Isa::scalar, Isa::sse2, Isa::avx2, Isa::avx512})
-        if (std::strcmp(env, to_string(i)) == 0 && static_cast<int>(i) <= static_cast<int>(best)) return i;
-    }
-    return best;
-  }();
+  static const Isa isa = static_cast<Isa>(
+      std::min(static_cast<int>(tritri::requested_isa()), static_cast<int>(detected_isa())));
   return isa;
 }
 

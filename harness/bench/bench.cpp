@@ -64,6 +64,14 @@ CorpusIdentity family_corpus(const Options& options, const WorkloadInput& input)
 
 }  // namespace
 
+std::string_view to_string(Mode m) { return m == Mode::call ? "call" : "batch"; }
+
+std::optional<Mode> parse_mode(std::string_view s) {
+  for (Mode m : kModes)
+    if (to_string(m) == s) return m;
+  return std::nullopt;
+}
+
 Options quick_options() {
   Options o;
   o.pool_size = 4096;
@@ -76,6 +84,7 @@ Options quick_options() {
 
 int run(const Options& options, std::ostream& out) {
   // ---- what to run ----
+  if (options.modes.empty()) throw std::invalid_argument("no timing mode (call, batch) chosen");
   const Lineup lineup = lineup_of(options, reference_algorithm(options.reference));
   std::vector<Level> levels = options.levels;
   if (levels.empty()) levels.assign(std::begin(kLevels), std::end(kLevels));
@@ -115,7 +124,7 @@ int run(const Options& options, std::ostream& out) {
   const TimingRun timing = run_benchmarks(entries.timed, options.repetitions);
 
   // ---- the tables, the harness's numbers, the JSON ----
-  const Summary summary = summarize(entries.timed, planned.pools, lineup, options.pool_size);
+  const Summary summary = summarize(entries.timed, planned.pools, lineup, options.pool_size, options.modes);
   print_tables(entries.timed, summary, options.repetitions, out);
   print_harness(summary, out);
   if (!options.json_path.empty()) {

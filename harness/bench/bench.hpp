@@ -1,13 +1,14 @@
 // `tritri bench`: every registered algorithm timed on every workload and level it serves, on
 // Google Benchmark, with the answers checked against the oracle first and the operations counted.
 //
-// Names: `algo/level/workload:value`, e.g. `moller97/overlap/ratio:0.50`, and for an algorithm's
-// stages `yuhe13/stage:transform/ratio:0.50`. One iteration is one pass over the pool in order,
-// in batches of kBatch pairs through the algorithm's batch entry point (one indirect call per
-// batch, none per pair, no allocation in the timed loop); every answer is folded into a checksum
-// that goes through benchmark::DoNotOptimize once per batch. Time per pair comes from items
-// processed (one item = one pair) and from the `per_pair` counter. Every time is also given
-// relative to the reference algorithm's on the same pool, in the same run.
+// Names: `algo/level/workload:value/mode`, e.g. `moller97/overlap/ratio:0.50/call`, and for an
+// algorithm's stages `yuhe13/stage:transform/ratio:0.50/batch`. One iteration is one pass over
+// the pool in order, either one pair per out-of-line call of the algorithm's one-pair entry
+// (Mode::call) or in batches of kBatch pairs through its batch entry point (Mode::batch); no
+// allocation in the timed loop; every answer is folded into a checksum that goes through
+// benchmark::DoNotOptimize once per kBatch pairs. Time per pair comes from items processed (one
+// item = one pair) and from the `per_pair` counter. Every time is also given relative to the
+// reference algorithm's on the same pool in the same mode, in the same run.
 //
 // The pieces: workload.hpp and workloads/ (the pools), entries.cpp (checking and counting before
 // timing), timing.cpp (Google Benchmark), tables.cpp, summary.cpp, json_output.cpp, context.cpp
@@ -32,6 +33,18 @@ namespace tritri::bench {
 
 inline constexpr std::size_t kBatch = 256;
 
+// How the timed loop hands pairs to the algorithm, an axis of every benchmark like the level and
+// the workload:
+//   call   one pair per call of its one-pair entry, through a pointer the compiler cannot see
+//          through (as a BVH traversal calls a narrow-phase test); a C-ABI plug-in, which has no
+//          one-pair entry, through its batch function with n = 1.
+//   batch  the pool in batches of kBatch pairs through its batch entry (a SIMD test decides
+//          several pairs per instruction). An algorithm's stages are timed in this mode only.
+enum class Mode : std::uint8_t { call, batch };
+inline constexpr Mode kModes[] = {Mode::call, Mode::batch};
+std::string_view to_string(Mode);  // "call", "batch"
+std::optional<Mode> parse_mode(std::string_view);
+
 struct Options {
   std::vector<const Algorithm*> algorithms;  // empty: every registered algorithm
   std::vector<Level> levels;                 // empty: every level
@@ -42,6 +55,7 @@ struct Options {
   // Every time is also given relative to this algorithm's overlap level (or its first answered
   // level) on the same pool; it is always timed.
   std::string reference = "moller97";
+  std::vector<Mode> modes = {Mode::call};  // in this order; `tritri bench --mode`
   std::size_t pool_size = kDefaultPoolSize;
   std::uint64_t seed = kDefaultSeed;
   int repetitions = 9;
@@ -95,5 +109,8 @@ std::optional<OpCounts> count_operations(const Algorithm& algorithm, Level level
 // The context keys written into the JSON: git SHA and dirty flag, compiler and flags, CGAL, FCL
 // and Eigen versions (and the rest of the run's provenance).
 std::vector<std::pair<std::string, std::string>> build_context();
+
+// The processor's model name (/proc/cpuinfo), "unknown" when it cannot be read.
+std::string cpu_model();
 
 }  // namespace tritri::bench

@@ -4,6 +4,7 @@
 // No test here asserts anything about time: speed claims come from the benchmark only.
 #include "harness/bench/bench.hpp"
 #include "harness/bench/pools.hpp"
+#include "harness/bench/test_support.hpp"
 #include "harness/bench/workload.hpp"
 #include "harness/bench/workloads/family.hpp"
 #include "harness/bench/workloads/ratio.hpp"
@@ -284,16 +285,7 @@ TEST(BenchWorkloads, TheDefaultSetLeavesOutSizeAndHasStageOnlyWithStages) {
 
 // A small real run on ratio:0.50, timing moller97 and guigue03.
 Options tiny_run(const std::filesystem::path& json) {
-  Options o = quick_options();
-  o.algorithms = {registry().find("moller97"), registry().find("guigue03")};
-  o.levels = {Level::overlap};
-  o.workloads = {"ratio:0.5"};
-  o.pool_size = 512;
-  o.repetitions = 2;
-  o.min_time = 0.001;
-  o.count_operations = false;
-  o.json_path = json.string();
-  return o;
+  return small_run({registry().find("moller97"), registry().find("guigue03")}, 512, 2, json.string());
 }
 
 TEST(BenchReference, TimesAreRelativeToTheNamedAlgorithmUnderOneKey) {
@@ -315,9 +307,9 @@ TEST(BenchReference, TimesAreRelativeToTheNamedAlgorithmUnderOneKey) {
     median[r["name"]] = r["ns_per_pair_median"];
     relative[r["name"]] = r["relative_to_reference"];
   }
-  EXPECT_DOUBLE_EQ(relative.at("guigue03/overlap/ratio:0.50"), 1.0);
-  EXPECT_DOUBLE_EQ(relative.at("moller97/overlap/ratio:0.50"),
-                   median.at("moller97/overlap/ratio:0.50") / median.at("guigue03/overlap/ratio:0.50"));
+  EXPECT_DOUBLE_EQ(relative.at("guigue03/overlap/ratio:0.50/call"), 1.0);
+  EXPECT_DOUBLE_EQ(relative.at("moller97/overlap/ratio:0.50/call"),
+                   median.at("moller97/overlap/ratio:0.50/call") / median.at("guigue03/overlap/ratio:0.50/call"));
   std::filesystem::remove(path);
 }
 
@@ -355,9 +347,16 @@ TEST(BenchRun, StageHooksAreTimedAndWritten) {
   const auto doc = nlohmann::json::parse(in);
   std::set<std::string> names;
   for (const auto& b : doc["benchmarks"]) names.insert(b["name"].get<std::string>());
-  EXPECT_TRUE(names.count("stagetest/stage:mirror/ratio:0.50")) << out.str();
-  EXPECT_TRUE(names.count("stagetest/stage:read/ratio:0.50"));
-  EXPECT_FALSE(names.count("stagetest/overlap/ratio:0.50"));  // the stage pool is for the stages only
+  // Stages are batch functions: timed in batch mode even when only call mode is asked for.
+  EXPECT_TRUE(names.count("stagetest/stage:mirror/ratio:0.50/batch")) << out.str();
+  EXPECT_TRUE(names.count("stagetest/stage:read/ratio:0.50/batch"));
+  EXPECT_FALSE(names.count("stagetest/overlap/ratio:0.50/call"));  // the stage pool is for the stages only
+  for (const auto& r : doc["tritri"]["results"]) {
+    if (r["algorithm"] != "stagetest") continue;
+    EXPECT_TRUE(r["level"].is_null()) << r.dump();  // "level" means a level; the stage has its own field
+    EXPECT_TRUE(r["stage"] == "mirror" || r["stage"] == "read") << r.dump();
+    EXPECT_EQ(r["mode"], "batch");
+  }
   std::filesystem::remove(path);
 }
 
@@ -381,6 +380,7 @@ TEST(BenchRun, PathCountersAreRecordedPerPoolFromOnePass) {
   Options o = quick_options();
   o.algorithms = {&a};
   o.workloads = {"ratio:0.5", "type:point"};
+  o.modes = {Mode::call, Mode::batch};
   o.pool_size = 300;
   o.repetitions = 1;
   o.min_time = 0.001;
@@ -394,6 +394,11 @@ TEST(BenchRun, PathCountersAreRecordedPerPoolFromOnePass) {
   std::size_t seen = 0;
   for (const auto& r : doc["tritri"]["results"]) {
     if (r["algorithm"] != "countertest") continue;
+    // Counted through the batch entry: they describe the batch mode's path, and only it has them.
+    if (r["mode"] == "call") {
+      EXPECT_FALSE(r.contains("path_counters")) << r["name"];
+      continue;
+    }
     ASSERT_TRUE(r.contains("path_counters")) << r["name"];
     EXPECT_EQ(r["path_counters"]["pairs"], r["pool_size"]) << r["name"];
     ++seen;
@@ -435,14 +440,14 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
       EXPECT_TRUE(b.contains("per_pair"));
     }
   }
-  for (const char* name : {"moller97/overlap/ratio:0.00", "moller97/overlap/ratio:0.50", "moller97/overlap/ratio:1.00",
-                           "moller97/overlap/type:disjoint", "moller97/overlap/type:point",
-                           "moller97/overlap/type:segment", "moller97/overlap/type:area",
-                           "moller97-segment/segment/ratio:0.50"})
+  for (const char* name : {"moller97/overlap/ratio:0.00/call", "moller97/overlap/ratio:0.50/call",
+                           "moller97/overlap/ratio:1.00/call", "moller97/overlap/type:disjoint/call",
+                           "moller97/overlap/type:point/call", "moller97/overlap/type:segment/call",
+                           "moller97/overlap/type:area/call", "moller97-segment/segment/ratio:0.50/call"})
     EXPECT_TRUE(names.count(name)) << name;
   // Every registered algorithm of the default selection (build variants run when named) on every
   // level it answers: timed, or reported as not timed with the faults (crash, hang) that kept it
-  // out, paste-ready; and no build variant.
+  // out, paste-ready (named without a mode: it is checked, not timed); and no build variant.
   std::set<std::string> not_timed;
   for (const auto& e : doc["tritri"]["not_timed"]) {
     EXPECT_FALSE(e["faults"].empty()) << e["name"];
@@ -452,8 +457,9 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
     for (Level level : {Level::overlap, Level::relation, Level::segment})
       if (a.answers(level)) {
         const std::string name = a.name + "/" + std::string(to_string(level)) + "/ratio:0.50";
-        if (a.build.empty()) EXPECT_TRUE(names.count(name) || not_timed.count(name)) << name;
-        else EXPECT_FALSE(names.count(name) || not_timed.count(name)) << name;
+        const bool timed = names.count(name + "/call") > 0;
+        if (a.build.empty()) EXPECT_TRUE(timed || not_timed.count(name)) << name;
+        else EXPECT_FALSE(timed || not_timed.count(name)) << name;
       }
 
   ASSERT_TRUE(doc.contains("tritri"));
@@ -467,7 +473,7 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
   EXPECT_GE(pools_of["family"], 1);  // the corpus generator's families
   bool moller_ops = false;
   for (const auto& r : doc["tritri"]["results"])
-    if (r["name"] == "moller97/overlap/ratio:0.50") {
+    if (r["name"] == "moller97/overlap/ratio:0.50/call") {
       moller_ops = r.contains("ops_per_pair");
       EXPECT_DOUBLE_EQ(r["relative_to_reference"].get<double>(), 1.0);
     }

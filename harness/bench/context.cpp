@@ -2,7 +2,10 @@
 // run was made, so that two result files can be told apart.
 #include "harness/bench/report.hpp"
 
+#include "tritri/isa.hpp"
+
 #include <cstdio>
+#include <fstream>
 
 #if __has_include(<fcl/config.h>)
 #include <fcl/config.h>
@@ -49,6 +52,16 @@ std::string compiler() {
 
 }  // namespace
 
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      const std::size_t at = line.find_first_not_of(' ', line.find(':') + 1);
+      return at == std::string::npos ? "unknown" : line.substr(at);
+    }
+  return "unknown";
+}
+
 std::vector<std::pair<std::string, std::string>> build_context() {
   std::vector<std::pair<std::string, std::string>> c;
   const std::string dir = TRITRI_SOURCE_DIR;
@@ -81,8 +94,15 @@ RunContext run_context(const Options& options, const Planned& planned, const std
   c.emplace_back("oracle", oracle_description());
   c.emplace_back("repetitions", std::to_string(options.repetitions));
   c.emplace_back("random_interleaving", options.interleave ? "true" : "false");
-  c.emplace_back("timing", "CPU time per pair: one iteration is one in-order pass over the pool");
+  c.emplace_back("timing", "CPU time per pair: one iteration is one in-order pass over the pool, one pair per "
+                           "out-of-line call (mode call) or in batches (mode batch)");
   c.emplace_back("reference", options.reference);
+  std::string modes;
+  for (Mode m : options.modes) modes += (modes.empty() ? "" : ",") + std::string(to_string(m));
+  c.emplace_back("modes", modes);
+  c.emplace_back("cpu_model", cpu_model());
+  c.emplace_back("isa", std::string(to_string(requested_isa())));
+  c.emplace_back("isa_machine", std::string(to_string(machine_isa())));
   c.insert(c.end(), planned.context.begin(), planned.context.end());
   for (const auto& planned_pool : planned.pools) {
     const Pool& p = planned_pool.pool;

@@ -40,13 +40,24 @@ Score score_entry(const Algorithm& a, Level level, const Pool& pool, const Isola
   return score_segment(pool, got.segment);
 }
 
-std::unique_ptr<Entry> new_entry(const Algorithm* a, std::string level, const Pool& pool) {
+std::unique_ptr<Entry> new_entry(const Algorithm* a, std::optional<Level> level, const Pool& pool) {
   auto e = std::make_unique<Entry>();
   e->algo = a->name;
-  e->level = std::move(level);
+  e->level = level;
   e->algorithm = a;
   e->pool = &pool;
   return e;
+}
+
+// A checked entry, timed once per mode: the check does not depend on how the pairs are handed
+// over. The path counters are counted through the batch entry, so only batch mode keeps them.
+void add_timed(const Entry& checked, const std::vector<Mode>& modes, Entries& entries) {
+  for (Mode mode : modes) {
+    auto e = std::make_unique<Entry>(checked);
+    e->mode = mode;
+    if (mode != Mode::batch) e->counters.clear();
+    entries.timed.push_back(std::move(e));
+  }
 }
 
 // An algorithm that cannot be timed (one whose answers cross a pipe: its time would be the
@@ -56,8 +67,7 @@ void untimed_entries(const Algorithm* a, const Pool& pool, const std::vector<Lev
   const RunAnswers got = run_algorithm(*a, pair_names(pool), pool.pairs, {Level::overlap, Level::relation}, isolation);
   for (Level level : levels) {
     if (level == Level::segment || !a->answers(level)) continue;
-    auto e = new_entry(a, std::string(to_string(level)), pool);
-    e->answer_level = level;
+    auto e = new_entry(a, level, pool);
     e->score = level == Level::overlap ? score_overlap(pool, got.overlap) : score_relation(pool, got.relation);
     e->faults = got.faults;
     e->not_timed = "a process plug-in: its answers cross a pipe, so it is checked, not timed";
@@ -88,14 +98,13 @@ void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, c
                    const Options& options, CheckCache& checks, Entries& entries) {
   for (Level level : levels) {
     if (!a->answers(level)) continue;
-    auto e = new_entry(a, std::string(to_string(level)), pool);
-    e->answer_level = level;
+    auto e = new_entry(a, level, pool);
     e->floor = lineup.is_floor(a);
     if (const CachedCheck* done = checks.find(e->name())) {
       e->score = done->score;
       e->ops = done->ops;
       if (a->counters) e->counters = path_counters(*a, level, pool);
-      entries.timed.push_back(std::move(e));
+      add_timed(*e, options.modes, entries);
       continue;
     }
     e->score = score_entry(*a, level, pool, options.isolation, e->faults);
@@ -106,15 +115,16 @@ void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, c
     if (options.count_operations) e->ops = count_operations(*a, level, pool);
     if (a->counters) e->counters = path_counters(*a, level, pool);
     checks.put(e->name(), {e->score, e->ops});
-    entries.timed.push_back(std::move(e));
+    add_timed(*e, options.modes, entries);
   }
 }
 
 void stage_entries(const Algorithm* a, const Pool& pool, Entries& entries) {
   for (const StageEntry& s : a->stages) {
     if (!s.run) throw std::logic_error(a->name + ": stage '" + s.name + "' has no run function");
-    auto e = new_entry(a, "stage:" + s.name, pool);
+    auto e = new_entry(a, std::nullopt, pool);
     e->stage = &s;
+    e->mode = Mode::batch;  // a stage is a batch function (algorithm.hpp, StageEntry)
     if (s.prepare) {
       e->prepared.resize(pool.size());
       s.prepare(pool.pairs.data(), pool.size(), e->prepared.data());

@@ -16,10 +16,10 @@ namespace tritri::bench {
 
 struct Entry {
   std::string algo;
-  std::string level;  // "overlap", "relation", "segment", "stage:NAME"
   const Algorithm* algorithm = nullptr;
-  std::optional<Level> answer_level;  // unset for stages
-  const StageEntry* stage = nullptr;
+  std::optional<Level> level;          // the level timed; unset for a stage
+  const StageEntry* stage = nullptr;   // the stage timed, when it is one
+  std::optional<Mode> mode;            // unset while it is only checked (and when it is not timed)
   const Pool* pool = nullptr;
   std::vector<TrianglePair> prepared;  // a stage's input when it has a prepare step
   bool floor = false;
@@ -30,8 +30,13 @@ struct Entry {
   CounterList counters;         // the algorithm's path counters over one pass (PathCounters)
   std::vector<double> ns_per_pair;  // one per repetition (CPU time)
 
-  std::string row() const { return algo + "/" + level; }
-  std::string name() const { return row() + "/" + pool->name(); }
+  // "overlap", or "stage:NAME" for a stage: the second part of the name.
+  std::string what() const { return stage ? "stage:" + stage->name : std::string(to_string(*level)); }
+  std::string row() const { return algo + "/" + what(); }
+  // algo/level/workload:value/mode; the check, made before the modes are set, is named without it.
+  std::string name() const {
+    return row() + "/" + pool->name() + (mode ? "/" + std::string(to_string(*mode)) : "");
+  }
   const TrianglePair* input() const { return prepared.empty() ? pool->pairs.data() : prepared.data(); }
 };
 using EntryList = std::vector<std::unique_ptr<Entry>>;

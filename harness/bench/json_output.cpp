@@ -4,6 +4,8 @@
 #include "cases/util/stats.hpp"
 #include "harness/check/check_output.hpp"
 
+#include "tritri/isa.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -29,10 +31,20 @@ std::string nan_to_null(std::string text) {
   return text;
 }
 
+// The axes of an entry: algorithm, level (null for a stage), stage (null for a level), workload, mode.
+json axes_json(const Entry& e) {
+  return {{"name", e.name()},
+          {"algorithm", e.algo},
+          {"level", e.level ? json(to_string(*e.level)) : json()},
+          {"stage", e.stage ? json(e.stage->name) : json()},
+          {"workload", e.pool->name()},
+          {"mode", e.mode ? json(to_string(*e.mode)) : json()}};
+}
+
 json result_json(const Entry& e, const Summary& summary) {
-  json s = {{"name", e.name()},          {"algorithm", e.algo},          {"level", e.level},
-            {"workload", e.pool->name()}, {"pool_size", e.pool->size()},  {"wrong", e.score.wrong},
-            {"unsupported", e.score.unsupported}, {"ns_per_pair", e.ns_per_pair}};
+  json s = axes_json(e);
+  s.update({{"pool_size", e.pool->size()}, {"wrong", e.score.wrong}, {"unsupported", e.score.unsupported},
+            {"ns_per_pair", e.ns_per_pair}});
   if (!e.ns_per_pair.empty()) {
     s["ns_per_pair_median"] = median(e.ns_per_pair);
     if (const double r = summary.relative(e); std::isfinite(r)) s["relative_to_reference"] = r;
@@ -65,16 +77,25 @@ json untimed_json(const Entry& e) {
   for (const Fault& f : e.faults)
     faults.push_back({{"pair", f.index}, {"fate", to_string(f.fate)}, {"detail", f.detail},
                       {"line", format_case(Case{e.pool->name() + "#" + std::to_string(f.index), e.pool->pairs[f.index], {}, "", 0})}});
-  return {{"name", e.name()}, {"algorithm", e.algo}, {"level", e.level}, {"workload", e.pool->name()},
-          {"reason", e.not_timed.empty() ? "crashed or hung when checked" : e.not_timed},
-          {"wrong", e.score.wrong}, {"unsupported", e.score.unsupported}, {"faults", faults}};
+  json u = axes_json(e);
+  u.update({{"reason", e.not_timed.empty() ? "crashed or hung when checked" : e.not_timed},
+            {"wrong", e.score.wrong}, {"unsupported", e.score.unsupported}, {"faults", faults}});
+  return u;
 }
 
 json harness_json(const Summary& summary) {
-  json floors;
+  json shares = json::array();
   for (const auto& fs : summary.floor_shares)
-    floors[fs.name] = {{"full_size_pools", finite_or_null(fs.share_full)}, {"all_pools", finite_or_null(fs.share)}};
-  return {{"floor_share_of_fastest", floors},
+    shares.push_back({{"floor", fs.floor},
+                      {"test", fs.row},
+                      {"mode", to_string(fs.mode)},
+                      {"published", fs.published},
+                      {"full_size_pools", finite_or_null(fs.share_full)},
+                      {"worst_full_size_pool", fs.where_full},
+                      {"all_pools", finite_or_null(fs.share)}});
+  return {{"floors", summary.floors},
+          {"floor_share", shares},
+          {"floor_share_limit", kFloorShareLimit},
           {"spread_median", summary.spreads.empty() ? json() : json(median(summary.spreads))},
           {"spread_worst", finite_or_null(summary.worst_spread)}};
 }
@@ -92,9 +113,19 @@ void write_json(const std::string& path, const std::string& google_json, const R
     for (const auto& e : entries.timed) results.push_back(result_json(*e, summary));
     for (const auto& p : pools) pool_list.push_back(pool_json(p.pool));
     for (const auto& e : entries.untimed) untimed.push_back(untimed_json(*e));
-    doc["tritri"] = {{"schema", "tritri-bench/1"},         {"reference", summary.reference}, {"reference_level", summary.reference_row.substr(summary.reference.size() + 1)},
-                     {"not_timed", untimed},           {"pools", pool_list},
-                     {"results", results},             {"harness", harness_json(summary)},
+    json modes = json::array();
+    for (Mode m : summary.modes) modes.push_back(to_string(m));
+    doc["tritri"] = {{"schema", kBenchSchema},
+                     {"reference", summary.reference},
+                     {"reference_level", summary.reference_row.substr(summary.reference.size() + 1)},
+                     {"modes", modes},
+                     {"cpu_model", cpu_model()},
+                     {"isa", to_string(requested_isa())},
+                     {"isa_machine", to_string(machine_isa())},
+                     {"not_timed", untimed},
+                     {"pools", pool_list},
+                     {"results", results},
+                     {"harness", harness_json(summary)},
                      {"corpus", corpus_json(corpus)}};
     text = doc.dump(2);
   } else {

@@ -58,12 +58,53 @@ void time_stage(benchmark::State& state, StageRunBatch run, const TrianglePair* 
   }
 }
 
-using LevelTimer = void (*)(benchmark::State&, const Algorithm&, const TrianglePair*, std::size_t);
+// One pair per call through `fn` (a function pointer), `call(fn, pair)` making the call and
+// folding its answer. The empty asm makes the pointer opaque to the compiler on every pair, so
+// it can neither inline the test nor hoist or vectorise anything across calls: each pair is a
+// real indirect call, as a BVH traversal makes (harness/bench/README.md, "Modes", says how the
+// generated loop was checked).
+template <class Fn, class Call>
+void time_calls(benchmark::State& state, Fn fn, Call call, const TrianglePair* pairs, std::size_t n) {
+  std::uint64_t checksum = 0;
+  for (auto _ : state) {
+    for (std::size_t at = 0; at < n; at += kBatch) {
+      const std::size_t m = std::min(kBatch, n - at);
+      std::uint64_t sum = 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        Fn f = fn;
+        asm volatile("" : "+r"(f));
+        sum += call(f, pairs[at + i]);
+      }
+      checksum += sum;
+      benchmark::DoNotOptimize(checksum);
+    }
+  }
+}
+
+// Call mode goes through the one-pair entry, or, for an algorithm without one (a C-ABI
+// plug-in), through its batch with n = 1.
+template <Level L>
+void time_entry_level(benchmark::State& state, const Algorithm& a, Mode mode, const TrianglePair* pairs, std::size_t n) {
+  if (mode == Mode::batch) {
+    time_level<L>(state, a, pairs, n);
+  } else if (const PairFn<L> one = a.one_pair<L>()) {
+    time_calls(state, one, [](PairFn<L> f, const TrianglePair& p) { return fold_answer(f(p)); }, pairs, n);
+  } else {
+    const auto one_of_batch = [](LevelBatch<L> f, const TrianglePair& p) {
+      AnswerOf<L> answer{};
+      f(&p, 1, &answer);
+      return fold_answer(answer);
+    };
+    time_calls(state, a.batch<L>(), one_of_batch, pairs, n);
+  }
+}
+
+using LevelTimer = void (*)(benchmark::State&, const Algorithm&, Mode, const TrianglePair*, std::size_t);
 
 LevelTimer timer_of(Level level) {
   LevelTimer timer = nullptr;
   for_each_level([&](auto l) {
-    if (decltype(l)::value == level) timer = &time_level<decltype(l)::value>;
+    if (decltype(l)::value == level) timer = &time_entry_level<decltype(l)::value>;
   });
   return timer;
 }
@@ -160,6 +201,7 @@ const Algorithm& harness_floor() {
     f.summary = "the harness floor: reads every coordinate (integer XOR, no dependency chain), returns a bit";
     f.accepts_degenerate = true;
     f.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&floor_kernel>);
+    f.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &floor_kernel>);
     return f;
   }();
   return a;
@@ -189,10 +231,10 @@ void register_benchmarks(const EntryList& timed, int repetitions) {
   for (const auto& e : timed) {
     const Entry* entry = e.get();
     const std::size_t n = entry->pool->size();
-    const LevelTimer timer = entry->stage ? nullptr : timer_of(*entry->answer_level);
+    const LevelTimer timer = entry->stage ? nullptr : timer_of(*entry->level);
     auto* b = benchmark::RegisterBenchmark(entry->name().c_str(), [entry, n, timer](benchmark::State& state) {
       if (entry->stage) time_stage(state, entry->stage->run, entry->input(), n);
-      else timer(state, *entry->algorithm, entry->input(), n);
+      else timer(state, *entry->algorithm, *entry->mode, entry->input(), n);
       set_counters(state, *entry, n);
     });
     b->Unit(benchmark::kMicrosecond);

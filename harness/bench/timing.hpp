@@ -1,9 +1,9 @@
 // Timing on Google Benchmark: the harness's floor, the timed loops, registration and the run.
 //
-// One iteration is one pass over the pool in order, in batches of kBatch pairs through the
-// algorithm's batch entry point: one indirect call per batch, none per pair, no allocation in
-// the timed loop. Every answer is folded into a checksum that goes through
-// benchmark::DoNotOptimize once per batch.
+// One iteration is one pass over the pool in order, in the entry's mode (bench.hpp, Mode): one
+// opaque indirect call per pair, or one per batch of kBatch pairs; no allocation in the timed
+// loop. Every answer is folded into a checksum that goes through benchmark::DoNotOptimize once
+// per kBatch pairs.
 #pragma once
 
 #include "harness/bench/entry.hpp"

@@ -36,8 +36,9 @@ enum class Kind { check, bench };
 // whose tritri section names another, is refused rather than read with its counts as zeros.
 // Plain Google Benchmark JSON (no tritri section) has no version of its own and is read as is.
 // Both are documented with their keys: harness/README.md and harness/bench/README.md.
+// A bench file of version 1 timed every benchmark in batch mode, under a name without the mode.
 constexpr const char* kCheckSchema = "tritri-check/2";
-constexpr const char* kBenchSchema = "tritri-bench/1";
+constexpr const char* kBenchSchemas[] = {"tritri-bench/1", "tritri-bench/2"};
 
 // object[key], or an error naming the file and the key's path (`where` is the path up to it).
 const Json& required(const Json& object, const char* key, const std::string& where, const std::string& path) {
@@ -46,24 +47,37 @@ const Json& required(const Json& object, const char* key, const std::string& whe
   return object[key];
 }
 
-void expect_schema(const Json& schema, const char* understood, const std::string& where,
+template <std::size_t N>
+void expect_schema(const Json& schema, const char* const (&understood)[N], const std::string& where,
                    const std::string& path) {
-  if (!schema.is_string() || schema.get<std::string>() != understood)
-    throw InputError(path + ": " + where + " is " + schema.dump() + "; tritri compare reads " + understood);
+  std::string names;
+  for (const char* u : understood) {
+    if (schema.is_string() && schema.get<std::string>() == u) return;
+    names += (names.empty() ? "" : " or ") + std::string(u);
+  }
+  throw InputError(path + ": " + where + " is " + schema.dump() + "; tritri compare reads " + names);
 }
 
 Kind kind_of(const Json& doc, const std::string& path) {
   if (doc.is_object() && doc.contains("schema") && doc["schema"].is_string() &&
       doc["schema"].get<std::string>().rfind("tritri-check/", 0) == 0) {
-    expect_schema(doc["schema"], kCheckSchema, "schema", path);
+    expect_schema(doc["schema"], {kCheckSchema}, "schema", path);
     return Kind::check;
   }
   if (doc.is_object() && doc.contains("benchmarks") && doc["benchmarks"].is_array()) {
-    if (doc.contains("tritri")) expect_schema(required(doc["tritri"], "schema", "tritri.", path), kBenchSchema,
+    if (doc.contains("tritri")) expect_schema(required(doc["tritri"], "schema", "tritri.", path), kBenchSchemas,
                                               "tritri.schema", path);
     return Kind::bench;
   }
   throw InputError(path + ": neither a 'tritri check --json' result nor a benchmark result");
+}
+
+// A `tritri bench` file from before the mode was an axis (tritri.schema tritri-bench/1)
+// timed every benchmark in batch mode, under a name without the mode: named as now, it is compared
+// with the batch-mode benchmarks of a newer file, and with nothing timed one pair per call.
+std::string name_with_mode(const Json& doc, const std::string& name) {
+  const bool before_modes = doc.contains("tritri") && doc["tritri"].value("schema", "") == kBenchSchemas[0];
+  return before_modes ? name + "/batch" : name;
 }
 
 // Per benchmark, the time per item of every repetition, in seconds.
@@ -75,8 +89,8 @@ std::map<std::string, std::vector<double>> repetitions(const Json& doc, const st
     const std::string where = "benchmarks[" + std::to_string(index++) + "].";
     if (b.value("run_type", "iteration") != "iteration") continue;
     if (b.contains("error_occurred") && b["error_occurred"].get<bool>()) continue;
-    const std::string name = b.contains("run_name") ? b["run_name"].get<std::string>()
-                                                    : required(b, "name", where, path).get<std::string>();
+    const std::string name = name_with_mode(doc, b.contains("run_name") ? b["run_name"].get<std::string>()
+                                                                        : required(b, "name", where, path).get<std::string>());
     double seconds;
     if (b.contains("items_per_second") && b["items_per_second"].get<double>() > 0) {
       seconds = 1.0 / b["items_per_second"].get<double>();

@@ -48,14 +48,18 @@ TEST(MannWhitney, TiesUseTheNormalApproximation) {
 }
 
 // A Google Benchmark result with 9 repetitions per benchmark, ns per item scaled by `factor`,
-// each with noise of 1% (the standard deviation of a uniform spread of ±1.7%).
-std::string bench_file(const std::string& name, double factor, unsigned seed) {
+// each with noise of 1% (the standard deviation of a uniform spread of ±1.7%); with a "tritri"
+// section when one is given, as `tritri bench` writes.
+std::string bench_file(const std::string& name, double factor, unsigned seed,
+                       const std::vector<std::string>& benches = {"moller97/overlap/ratio:0.5", "guigue03/overlap/ratio:0.5"},
+                       const nlohmann::json& tritri = nullptr) {
   Rng rng(seed);
   auto noise = [&] { return rng.uniform(1 - 0.0173, 1 + 0.0173); };
   nlohmann::json doc;
   doc["context"] = {{"date", "x"}};
+  if (!tritri.is_null()) doc["tritri"] = tritri;
   doc["benchmarks"] = nlohmann::json::array();
-  for (const std::string bench : {"moller97/overlap/ratio:0.5", "guigue03/overlap/ratio:0.5"})
+  for (const std::string& bench : benches)
     for (int r = 0; r < 9; ++r) {
       const double ns = (bench[0] == 'm' ? 30.0 : 25.0) * factor * noise();
       doc["benchmarks"].push_back({{"name", bench}, {"run_name", bench}, {"run_type", "iteration"},
@@ -141,6 +145,21 @@ TEST(CompareChecks, ReportsTheFamiliesWhoseErrorsChanged) {
   EXPECT_EQ(out.str().find("random"), std::string::npos) << out.str();
   std::ostringstream back;
   EXPECT_FALSE(print_comparison(back, b, a, {}));  // fewer errors is not worse
+}
+
+// A bench file from before the mode was an axis (its "tritri" section has no schema) timed every
+// benchmark in batch mode: it is compared with the batch mode of a newer file, never with call.
+TEST(CompareBenchmarks, AFileFromBeforeTheModesIsComparedWithTheBatchModeOnly) {
+  const auto old = bench_file("modes-old.json", 1.0, 7, {"moller97/overlap/ratio:0.50"}, nlohmann::json::object());
+  const auto now = bench_file("modes-new.json", 1.0, 8,
+                              {"moller97/overlap/ratio:0.50/call", "moller97/overlap/ratio:0.50/batch"},
+                              {{"schema", "tritri-bench/2"}});
+  const auto rows = compare_benchmarks(old, now, {});
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].name, "moller97/overlap/ratio:0.50/batch");
+  // A plain Google Benchmark file (no "tritri" section) keeps its names.
+  const auto plain = bench_file("modes-plain.json", 1.0, 9, {"moller97/overlap/ratio:0.50"});
+  ASSERT_EQ(compare_benchmarks(plain, old, {}).size(), 0u);
 }
 
 TEST(CompareChecks, RefusesFilesItCannotCompare) {

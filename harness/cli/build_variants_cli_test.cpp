@@ -58,7 +58,7 @@ TEST(BuildVariants, CheckAndBenchTakeTheirNames) {
   EXPECT_NE(r.out.find("moller97@v3fma  (all)"), std::string::npos) << r.out;
   r = tritri("bench --quick --list --no-cache --pool 1024 --algo moller97,moller97@v3fma --workload ratio:0.5");
   EXPECT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("\nmoller97@v3fma/overlap/ratio:0.50\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nmoller97@v3fma/overlap/ratio:0.50/call\n"), std::string::npos) << r.out;  // the default mode
   const std::string json = std::string(TRITRI_BINARY_DIR) + "/scratch-v3fma-bench.json";
   r = tritri("bench --quick --no-cache --no-ops --pool 1024 --repetitions 1 --algo moller97,moller97@v3fma "
              "--workload ratio:0.5 --json " + json);

@@ -1,6 +1,9 @@
 #include "harness/cli/args.hpp"
 #include "harness/bench/bench.hpp"
 #include "harness/cli/commands.hpp"
+#include "tritri/isa.hpp"
+
+#include <cstdlib>
 
 #include <iostream>
 
@@ -9,6 +12,7 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: tritri bench [--quick] [--algo NAME...] [--level L...] [--workload W...]\n"
+    "                    [--mode call|batch|both] [--isa NAME]\n"
     "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
     "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
     "                    [--json OUT] [--cases FILE...] [--list] [--cache DIR] [--no-cache]\n\n"
@@ -26,7 +30,8 @@ constexpr const char* kHelp =
     "             262144, 1048576: how a small pool lets the branch predictor learn the\n"
     "             answers. Not in the default set (labelling a million pairs takes a while);\n"
     "             --pool does not apply to it\n"
-    "Benchmarks are named algo/level/workload:value (e.g. moller97/overlap/ratio:0.50). Every\n"
+    "Benchmarks are named algo/level/workload:value/mode (e.g. moller97/overlap/ratio:0.50/call;\n"
+    "a stage: yuhe13/stage:transform/ratio:0.50/batch). Every\n"
     "algorithm is checked on every pool first: 'wrong' counts its disagreements with the\n"
     "oracle, shown beside the time. Prints ns per pair per algorithm x workload, relative\n"
     "to the reference, the operation counts of the counting instantiations, the harness\n"
@@ -36,6 +41,20 @@ constexpr const char* kHelp =
     "                     x86-64-v3/FMA builds (NAME@v3fma), which run when named. The\n"
     "                     reference and the floors are always included\n"
     "  --level L...       overlap, relation or segment; default all\n"
+    "  --mode M           how pairs reach the test, an axis of every benchmark:\n"
+    "                       call   one pair per out-of-line call through a pointer, as a BVH\n"
+    "                              traversal calls its narrow-phase test (a C-ABI plug-in: its\n"
+    "                              batch function with n = 1); the default: it compares every\n"
+    "                              test on the same terms\n"
+    "                       batch  the pool in batches of 256 through the batch entry, where a\n"
+    "                              SIMD test (exact) decides several pairs per instruction\n"
+    "                       both   each, side by side (the main job, scripts/run)\n"
+    "                     Stages are timed in batch mode whatever the mode. The floors are timed\n"
+    "                     in every mode, and their share is given per test and mode\n"
+    "  --isa NAME         scalar, sse2, avx2 or avx512: every lane algorithm (exact) runs on at\n"
+    "                     most NAME, to show the times on an older CPU; refused when this\n"
+    "                     machine lacks NAME. Sets TRITRI_ISA (tritri/isa.hpp), which they read;\n"
+    "                     the JSON records the ISA used, the machine's and the CPU model\n"
     "  --workload W...    ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N;\n"
     "                     default ratio, type, family, stage\n"
     "  --reference NAME   every time is also given relative to NAME's overlap level (or its\n"
@@ -76,6 +95,17 @@ constexpr const char* kHelpAfterTimeout =
     "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments (an unknown\n"
     "workload or reference among them).\n\n";
 
+// --isa NAME: asks every lane algorithm for NAME, before any of them is first used (tritri/isa.hpp).
+void request_isa(const std::optional<std::string>& name) {
+  if (!name) return;
+  const auto isa = parse_isa(*name);
+  if (!isa) throw UsageError("unknown --isa '" + *name + "' (scalar, sse2, avx2, avx512)");
+  if (*isa > machine_isa())
+    throw UsageError("--isa " + *name + ": this machine (" + bench::cpu_model() + ") runs at most " +
+                     std::string(to_string(machine_isa())));
+  setenv(kIsaVariable, name->c_str(), 1);
+}
+
 // The options the command line asks for, checked.
 bench::Options options_from(const Args& args) {
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
@@ -87,6 +117,11 @@ bench::Options options_from(const Args& args) {
     options.levels.push_back(*level);
   }
   options.workloads = args.values("--workload");
+  if (auto m = args.value("--mode")) {
+    if (*m == "both") options.modes = {bench::Mode::call, bench::Mode::batch};
+    else if (auto mode = bench::parse_mode(*m)) options.modes = {*mode};
+    else throw UsageError("unknown --mode '" + *m + "' (call, batch, both)");
+  }
   options.reference = args.value("--reference").value_or(options.reference);
   options.filter = args.value("--filter").value_or("");
   options.pool_size = args.count("--pool", options.pool_size);
@@ -114,7 +149,7 @@ bench::Options options_from(const Args& args) {
 
 int cmd_bench(int argc, char** argv) {
   Args args(argc, argv,
-            merged({.valued = {"--filter", "--pool", "--seed", "--repetitions", "--min-time", "--json", "--reference",
+            merged({.valued = {"--mode", "--isa", "--filter", "--pool", "--seed", "--repetitions", "--min-time", "--json", "--reference",
                                "--cache"},
                     .lists = {"--algo", "--level", "--workload", "--cases"},
                     .flags = {"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"},
@@ -126,6 +161,7 @@ int cmd_bench(int argc, char** argv) {
   }
   if (!args.positional().empty()) throw UsageError("unexpected argument '" + args.positional().front() + "'");
 
+  request_isa(args.value("--isa"));
   load_external_algorithms(args);
   const bench::Options options = options_from(args);
   try {

@@ -57,6 +57,11 @@ def ns_text(x):
     return markdown.ns(x)
 
 
+def in_mode(results, mode, **axes):
+    """The bench results of `mode` whose fields are `axes` (a file before the modes: batch)."""
+    return [r for r in results if (r.get("mode") or "batch") == mode and all(r[k] == v for k, v in axes.items())]
+
+
 class ReportFromFixture(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -171,39 +176,40 @@ class ReportFromFixture(unittest.TestCase):
     # ---- parts 2 and 3 ----
     def test_speed_error_table_matches_bench_and_check(self):
         (header, rows), = tables_in(self.text, "2 Speed against error")
-        self.assertEqual(header[:3], ["algorithm", "level timed", "ns/pair"])
+        self.assertEqual(header[:4], ["algorithm", "level timed", "ns/pair call", "ns/pair batch"])
         for r in rows:
-            entry = [e for e in self.bench["tritri"]["results"]
-                     if e["algorithm"] == r[0] and e["level"] == r[1] and e["workload"] == "ratio:0.50"]
-            self.assertEqual(len(entry), 1, r[0])
-            self.assertEqual(r[2], ns_text(entry[0]["ns_per_pair_median"]))
+            for mode, cell in (("call", r[2]), ("batch", r[3])):
+                entry = in_mode(self.bench["tritri"]["results"], mode, algorithm=r[0], level=r[1],
+                                workload="ratio:0.50")
+                self.assertEqual(len(entry), 1, (r[0], mode))
+                self.assertEqual(cell, ns_text(entry[0]["ns_per_pair_median"]))
             ts = [t for t in self.tallies(r[0]) if t["family"] != "random"]
             judged = sum(t["cases"] - t["unsupported"] for t in ts)
             wrong = sum(t["false_positives"] + t["false_negatives"] + t["crashes"] + t["timeouts"] for t in ts)
-            self.assertEqual(r[3], markdown.pct(wrong / judged, 3))
+            self.assertEqual(r[header.index("error rate")], markdown.pct(wrong / judged, 3))
 
     def test_ratio_table_matches_bench(self):
         tables = tables_in(self.text, "3 Time against intersection ratio")
         header, rows = tables[0]
-        rs = header[1:]
+        self.assertEqual(header[:2], ["algorithm", "mode"])
+        rs = header[2:]
         self.assertEqual(rs[0], "0.0")
         self.assertEqual(rs[-1], "1.0")
+        self.assertEqual({r[1] for r in rows}, {"call", "batch"})  # the modes side by side
         for r in rows:
             level = "overlap" if any(e["algorithm"] == r[0] and e["level"] == "overlap"
                                      for e in self.bench["tritri"]["results"]) else "relation"
-            for rtext, cell in zip(rs, r[1:]):
+            for rtext, cell in zip(rs, r[2:]):
                 w = "ratio:%.2f" % float(rtext)
-                e = [x for x in self.bench["tritri"]["results"]
-                     if x["algorithm"] == r[0] and x["level"] == level and x["workload"] == w][0]
+                e, = in_mode(self.bench["tritri"]["results"], r[1], algorithm=r[0], level=level, workload=w)
                 self.assertEqual(cell, ns_text(e["ns_per_pair_median"]), (r[0], w))
 
     def test_type_table_matches_bench(self):
         (header, rows), = tables_in(self.text, "3.1 Time per intersection type")
-        self.assertEqual(sorted(header[1:]), ["area", "disjoint", "point", "segment"])
+        self.assertEqual(sorted(header[2:]), ["area", "disjoint", "point", "segment"])
         for r in rows:
-            for t, cell in zip(header[1:], r[1:]):
-                es = [x for x in self.bench["tritri"]["results"]
-                      if x["algorithm"] == r[0] and x["workload"] == "type:" + t]
+            for t, cell in zip(header[2:], r[2:]):
+                es = in_mode(self.bench["tritri"]["results"], r[1], algorithm=r[0], workload="type:" + t)
                 levels = [x["level"] for x in es]
                 level = "overlap" if "overlap" in levels else "relation"
                 e = [x for x in es if x["level"] == level][0]
@@ -242,21 +248,22 @@ class ReportFromFixture(unittest.TestCase):
     def test_exact_table_gives_each_pools_fallback_shares_and_both_paths(self):
         results = load("bench.json")["tritri"]["results"]
         header, rows = tables_in(self.text, "3.3 The exact test: where its time goes")[0]
-        self.assertEqual(header[:3], ["pool", "exact ns", "exact-scalar ns"])
-        exact = {e["workload"]: e for e in results if e["algorithm"] == "exact" and e["level"] == "overlap"}
-        scalar = {e["workload"]: e for e in results if e["algorithm"] == "exact-scalar" and e["level"] == "overlap"}
-        self.assertEqual(sorted(r[0] for r in rows), sorted(exact))
+        self.assertEqual(header[:3], ["pool", "exact ns call", "exact ns batch"])
+        exact = {m: {e["workload"]: e for e in in_mode(results, m, algorithm="exact", level="overlap")}
+                 for m in ("call", "batch")}
+        self.assertEqual(sorted(r[0] for r in rows), sorted(exact["batch"]))
         self.assertTrue(any(r[0].startswith("family:") for r in rows))
         for r in rows:
-            e, c = exact[r[0]], exact[r[0]]["path_counters"]
-            self.assertEqual(r[1], markdown.ns(e["ns_per_pair_median"]), r[0])
-            self.assertEqual(r[2], markdown.ns(scalar[r[0]]["ns_per_pair_median"]), r[0])
+            c = exact["batch"][r[0]]["path_counters"]  # counted through the batch entry
+            self.assertNotIn("path_counters", exact["call"][r[0]])
+            self.assertEqual(r[1], markdown.ns(exact["call"][r[0]]["ns_per_pair_median"]), r[0])
+            self.assertEqual(r[2], markdown.ns(exact["batch"][r[0]]["ns_per_pair_median"]), r[0])
+            moller, = in_mode(results, "call", algorithm="moller97", level="overlap", workload=r[0])
+            self.assertEqual(r[header.index("÷ moller97 call")],
+                             markdown.ratio(exact["call"][r[0]]["ns_per_pair_median"] / moller["ns_per_pair_median"]))
             self.assertEqual(r[header.index("undecided by SIMD")], markdown.pct(c["undecided_by_simd"] / c["pairs"]), r[0])
             self.assertEqual(r[header.index("to scalar path")], markdown.pct(c["to_scalar"] / c["pairs"]), r[0])
             self.assertIn("isa:" + r[-1], c)
-            # the scalar path alone sends every pair to the scalar classification
-            sc = scalar[r[0]]["path_counters"]
-            self.assertEqual(sc["to_scalar"], sc["pairs"], r[0])
 
     def test_compiler_answer_tables_match_the_diff(self):
         diff = load("compiler-diff.json")
@@ -299,8 +306,8 @@ class ReportFromFixture(unittest.TestCase):
         by_type = {r[0]: r for r in rows}
         for k, seconds in load_published("sabharwal15")["table1"]["seconds_per_pair"].items():
             self.assertEqual(by_type[k][1], "%.3f ms" % (1000 * seconds))
-            e = [x for x in self.bench["tritri"]["results"]
-                 if x["algorithm"] == "sabharwal15" and x["workload"] == "type:" + k and x["level"] == "relation"]
+            e = in_mode(self.bench["tritri"]["results"], "call", algorithm="sabharwal15", workload="type:" + k,
+                        level="relation")
             self.assertEqual(by_type[k][3], ns_text(e[0]["ns_per_pair_median"]))
         self.assertEqual(by_type["overall"][1], "1.353 ms")
 
@@ -403,6 +410,53 @@ class Stages(unittest.TestCase):
         self.assertEqual(dict(data.stage_results(bench)["yuhe13"]), {"transform": 2.0, "both": 8.0})
         self.assertEqual(data.primary_levels(bench), {"yuhe13": "relation"})
 
+    def test_a_stage_has_its_own_field_since_the_modes(self):
+        from tritri_report import data
+        bench = {"tritri": {"schema": "tritri-bench/2", "results": [
+            {"algorithm": "yuhe13", "level": None, "stage": "transform", "mode": "batch", "workload": "ratio:0.50",
+             "ns_per_pair_median": 2.0}]}}
+        self.assertEqual(dict(data.stage_results(bench)["yuhe13"]), {"transform": 2.0})
+        self.assertEqual(data.primary_levels(bench), {})  # a stage is not a level
+
+
+class Modes(unittest.TestCase):
+    BENCH = {"tritri": {"schema": "tritri-bench/2", "cpu_model": "Some CPU", "isa": "avx2",
+                        "harness": {"floors": ["floor", "null"]}, "results": [
+        {"algorithm": "moller97", "level": "overlap", "mode": "call", "workload": "ratio:0.50", "ns_per_pair_median": 30.0},
+        {"algorithm": "moller97", "level": "overlap", "mode": "batch", "workload": "ratio:0.50", "ns_per_pair_median": 25.0}]}}
+
+    def test_a_lookup_takes_the_mode_and_fails_loudly_without_one_when_two_match(self):
+        from tritri_report import data
+        self.assertEqual(data.bench_median(self.BENCH, "moller97", "overlap", "ratio:0.50", "call"), 30.0)
+        self.assertEqual(data.bench_median(self.BENCH, "moller97", "overlap", "ratio:0.50", "batch"), 25.0)
+        with self.assertRaisesRegex(ValueError, "matches 2 results .*name the mode"):
+            data.bench_entry(self.BENCH, "moller97", "overlap", "ratio:0.50")
+        self.assertEqual(data.bench_modes(self.BENCH), ["call", "batch"])
+        self.assertEqual(data.floors(self.BENCH), {"floor", "null"})
+        self.assertEqual(data.platform(self.BENCH), ("Some CPU", "avx2"))
+
+    def test_a_file_from_before_the_modes_is_batch_mode(self):
+        from tritri_report import data
+        old = {"tritri": {"harness": {"floor_share_of_fastest": {"floor": {}, "null": {}}}, "results": [
+            {"algorithm": "moller97", "level": "overlap", "workload": "ratio:0.50", "ns_per_pair_median": 25.0}]}}
+        self.assertEqual(data.bench_modes(old), ["batch"])
+        self.assertEqual(data.bench_median(old, "moller97", "overlap", "ratio:0.50", "batch"), 25.0)
+        self.assertIsNone(data.bench_median(old, "moller97", "overlap", "ratio:0.50", "call"))
+        self.assertEqual(data.floors(old), {"floor", "null"})
+
+    def test_the_headline_sentences_name_mode_cpu_and_isa(self):
+        run = report.Run(FIXTURE)
+        out = tempfile.mkdtemp()
+        try:
+            text = report.Report(run, out).build()
+        finally:
+            shutil.rmtree(out)
+        for heading in ("Summary", "2 Speed against error", "3 Time against intersection ratio",
+                        "3.3 The exact test: where its time goes"):
+            body = section(text, heading)
+            for words in ("call mode", "batch mode", run.cpu, run.isa):
+                self.assertIn(words, body, (heading, words))
+
 
 class Groups(unittest.TestCase):
     def test_the_sweep_a_group_counts_for(self):
@@ -453,11 +507,12 @@ class Reference(unittest.TestCase):
             shutil.copy(os.path.join(FIXTURE, "check.json"), src)
             bench = load("bench.json")
             results = bench["tritri"]["results"]
-            ref = {r["workload"]: r["ns_per_pair_median"] for r in results
+            ref = {(r["workload"], r["mode"]): r["ns_per_pair_median"] for r in results
                    if r["algorithm"] == "held97" and r["level"] == "overlap"}
             for r in results:
                 r.pop("relative_to_moller97", None)
-                r["relative_to_reference"] = r["ns_per_pair_median"] / ref[r["workload"]]
+                if r["level"] is not None:  # a stage has no reference
+                    r["relative_to_reference"] = r["ns_per_pair_median"] / ref[(r["workload"], r["mode"])]
             bench["tritri"]["reference"] = "held97"
             with open(os.path.join(src, "bench.json"), "w", encoding="utf-8") as f:
                 json.dump(bench, f)
@@ -465,13 +520,13 @@ class Reference(unittest.TestCase):
             with open(os.path.join(out, "README.md"), encoding="utf-8") as f:
                 text = f.read()
             (header, rows), = tables_in(text, "Summary")
-            self.assertEqual(header[-1], "× held97")
+            self.assertEqual(header[-2:], ["× held97 call", "× held97 batch"])
             level = {r["algorithm"]: r["level"] for r in results if r["workload"] == "ratio:0.50"
                      and r["level"] in ("overlap", "relation")}
             for row in rows:
-                e = [r for r in results if r["algorithm"] == row[0] and r["workload"] == "ratio:0.50"
-                     and r["level"] == level[row[0]]][0]
-                self.assertEqual(row[-1], markdown.ratio(e["relative_to_reference"]), row[0])
+                for mode, cell in (("call", row[-2]), ("batch", row[-1])):
+                    e, = in_mode(results, mode, algorithm=row[0], workload="ratio:0.50", level=level[row[0]])
+                    self.assertEqual(cell, markdown.ratio(e["relative_to_reference"]), (row[0], mode))
             self.assertIn("Every crossing with held97", text)
         finally:
             shutil.rmtree(src)
@@ -517,7 +572,7 @@ class SchemaChecks(unittest.TestCase):
         self.assertRegex(self.refusal("check-float.json", newer),
                          r"check-float\.json: schema 'tritri-check/3'; the report reads tritri-check/2$")
         self.assertRegex(self.refusal("bench.json", lambda doc: doc["tritri"].pop("schema")),
-                         r"bench\.json: no tritri\.schema; the report reads tritri-bench/1$")
+                         r"bench\.json: no tritri\.schema; the report reads tritri-bench/1, tritri-bench/2$")
 
     def test_a_missing_nested_key_is_named_by_its_path(self):
         def drop(doc):
@@ -530,6 +585,37 @@ class SchemaChecks(unittest.TestCase):
         loaded = data.load_results(FIXTURE)
         self.assertEqual(set(loaded), {role for role, name in data.FILES.items()
                                        if os.path.exists(os.path.join(FIXTURE, name))})
+
+
+class LegibleFigures(unittest.TestCase):
+    """Every figure, drawn from the fixture, keeps each axes to a number of series one can tell
+    apart (the Okabe-Ito palette has eight colours): more go into panels by group (kinds.py)."""
+    MAX_SERIES = 8
+
+    @staticmethod
+    def series_in(ax):
+        named = [x for x in list(ax.get_lines()) + list(ax.collections) if not x.get_label().startswith("_")]
+        return len(named)
+
+    def test_no_axes_draws_more_series_than_can_be_told_apart(self):
+        from tritri_report import figures
+        counts, real = {}, figures._save
+
+        def counting(fig, path):
+            counts[os.path.basename(path)] = max([self.series_in(ax) for ax in fig.axes] + [0])
+            real(fig, path)
+        figures._save = counting
+        out = tempfile.mkdtemp()
+        try:
+            report.build_report(FIXTURE, out)
+        finally:
+            figures._save = real
+            shutil.rmtree(out)
+        self.assertIn("time-ratio.png", counts)
+        self.assertIn("speed-error.png", counts)
+        self.assertGreater(counts["time-ratio.png"], 1)  # the count sees the series it limits
+        for name, n in counts.items():
+            self.assertLessEqual(n, self.MAX_SERIES, name)
 
 
 class Sections(unittest.TestCase):

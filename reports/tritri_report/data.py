@@ -38,6 +38,11 @@ SINGULAR_EXCLUDED = {"random"}  # the one generic family; all others are singula
 HARNESS_FLOOR = "floor"
 # The reference of bench files written before `tritri bench` named its reference.
 OLD_REFERENCE = "moller97"
+# How a bench result handed pairs to the test (`tritri bench --mode`), in the order the report
+# shows them; files written before the mode was an axis (no "schema" in their "tritri" section)
+# timed every result in batch mode.
+MODES = ("call", "batch")
+OLD_MODE = "batch"
 
 
 # The kind of the roles whose name does not start with it.
@@ -163,7 +168,25 @@ def bench_results(bench):
 
 def floors(bench):
     """The timing floors `tritri bench` measured (its own and the `null` algorithm): not tests."""
-    return set((bench or {}).get("tritri", {}).get("harness", {}).get("floor_share_of_fastest") or {})
+    harness = (bench or {}).get("tritri", {}).get("harness", {})
+    return set(harness.get("floors") or harness.get("floor_share_of_fastest") or {})
+
+
+def mode_of(result):
+    return result.get("mode") or OLD_MODE
+
+
+def bench_modes(bench):
+    """The modes the bench timed, in MODES' order."""
+    seen = {mode_of(r) for r in bench_results(bench)}
+    return [m for m in MODES if m in seen]
+
+
+def platform(bench):
+    """(CPU model, the ISA the lane algorithms ran on) as the bench recorded them, or "?"."""
+    t = (bench or {}).get("tritri", {})
+    ctx = (bench or {}).get("context", {}) or {}
+    return t.get("cpu_model") or ctx.get("cpu_model") or "?", t.get("isa") or ctx.get("isa") or "?"
 
 
 def reference(bench):
@@ -181,18 +204,22 @@ def relative_to_reference(entry):
     return entry.get("relative_to_" + OLD_REFERENCE)
 
 
-def bench_median(bench, algorithm, level, workload):
-    for r in bench_results(bench):
-        if r["algorithm"] == algorithm and r["level"] == level and r["workload"] == workload:
-            return r.get("ns_per_pair_median")
-    return None
+def bench_entry(bench, algorithm, level, workload, mode=None):
+    """The result of algorithm x level x workload in `mode`; None when there is none. Without a
+    mode the file must hold one: a lookup that matches two results (two modes) fails loudly
+    rather than return the first."""
+    found = [r for r in bench_results(bench)
+             if r["algorithm"] == algorithm and r["level"] == level and r["workload"] == workload
+             and (mode is None or mode_of(r) == mode)]
+    if len(found) > 1:
+        raise ValueError("bench lookup %s/%s/%s matches %d results (modes %s): name the mode"
+                         % (algorithm, level, workload, len(found), ", ".join(mode_of(r) for r in found)))
+    return found[0] if found else None
 
 
-def bench_entry(bench, algorithm, level, workload):
-    for r in bench_results(bench):
-        if r["algorithm"] == algorithm and r["level"] == level and r["workload"] == workload:
-            return r
-    return None
+def bench_median(bench, algorithm, level, workload, mode=None):
+    e = bench_entry(bench, algorithm, level, workload, mode)
+    return e.get("ns_per_pair_median") if e else None
 
 
 def primary_levels(bench):
@@ -224,12 +251,13 @@ def ratio_workloads(bench):
 
 
 def stage_results(bench):
-    """{algorithm: {stage: ns}} from benchmarks named algo/stage:NAME/workload."""
+    """{algorithm: {stage: ns}}: each result's `stage` (before it had one, its level "stage:NAME")."""
     out = OrderedDict()
     for r in bench_results(bench):
-        lv = r["level"]
-        if lv.startswith("stage:") and r.get("ns_per_pair_median") is not None:
-            out.setdefault(r["algorithm"], OrderedDict())[lv.split(":", 1)[1]] = r["ns_per_pair_median"]
+        lv = r.get("level") or ""
+        stage = r.get("stage") or (lv.split(":", 1)[1] if lv.startswith("stage:") else None)
+        if stage and r.get("ns_per_pair_median") is not None:
+            out.setdefault(r["algorithm"], OrderedDict())[stage] = r["ns_per_pair_median"]
     return out
 
 

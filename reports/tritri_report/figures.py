@@ -14,12 +14,36 @@ from matplotlib.ticker import FuncFormatter  # noqa: E402
 
 DPI = 80
 _MARKERS = "osD^v<>phX*P"
+# Okabe and Ito's eight colours, told apart by people with any common colour-vision deficiency.
+OKABE_ITO = ("#000000", "#E69F00", "#56B4E9", "#009E73", "#F0E442", "#0072B2", "#D55E00", "#CC79A7")
 
 
 def _style(i):
     cmap = plt.get_cmap("tab20")
     return {"color": cmap(i % 20), "marker": _MARKERS[i % len(_MARKERS)],
             "linestyle": ["-", "--", "-.", ":"][(i // 20) % 4]}
+
+
+def _safe_style(i):
+    """A series' colour-blind-safe colour, marker and line style (16 before a repeat)."""
+    return {"color": OKABE_ITO[i % 8], "marker": _MARKERS[i % len(_MARKERS)],
+            "linestyle": ["-", "--"][(i // 8) % 2]}
+
+
+def _label_ends(ax, ends, fontsize=7):
+    """Names each line at its right end, nudged apart vertically (log scale) so none overlap."""
+    if not ends:
+        return
+    lo, hi = ax.get_ylim()
+    gap = 0.045 * (math.log10(hi) - math.log10(lo))
+    placed = []
+    for x, y, text, color in sorted(ends, key=lambda e: e[1]):
+        ly = math.log10(y)
+        if placed and ly < placed[-1] + gap:
+            ly = placed[-1] + gap
+        placed.append(ly)
+        ax.annotate(text, (x, y), xytext=(x + 0.03, 10 ** ly), textcoords="data", fontsize=fontsize,
+                    color=color, va="center", arrowprops={"arrowstyle": "-", "color": color, "lw": 0.4})
 
 
 def _save(fig, path):
@@ -61,19 +85,16 @@ def heatmap(rows, cols, values, counts, path, title, colorbar_label="error rate"
     _save(fig, path)
 
 
-def pareto(points, frontier, path, xlabel, ylabel):
-    """points: [(name, x ns, y rate)]; frontier: the names on the Pareto frontier."""
-    fig, ax = plt.subplots(figsize=(8.5, 5.5))
-    ys = [p[2] for p in points]
-    positive = [y for y in ys if y > 0]
-    floor = (min(positive) if positive else 1e-3) / 4
+def _pareto_axes(ax, points, front_points, frontier, floor):
+    """points: this panel's [(name, x, y)]; front_points: the whole mode's, for its frontier line."""
     for i, (name, x, y) in enumerate(points):
-        st = _style(i)
+        st = _safe_style(i)
         yy = y if y > 0 else floor
-        ax.scatter([x], [yy], color=st["color"], marker=st["marker"], s=60,
-                   edgecolors="black" if name in frontier else "none", zorder=3, label=name)
-        ax.annotate(name, (x, yy), textcoords="offset points", xytext=(5, 3), fontsize=7)
-    front = sorted(((x, y if y > 0 else floor) for n, x, y in points if n in frontier))
+        ax.scatter([x], [yy], color=st["color"], marker=st["marker"], s=50,
+                   edgecolors="red" if name in frontier else "none", linewidths=1.2, zorder=3, label=name)
+        ax.annotate(name, (x, yy), textcoords="offset points", xytext=(5, 4 if i % 2 else -9), fontsize=7,
+                    color=st["color"])
+    front = sorted(((x, y if y > 0 else floor) for n, x, y in front_points if n in frontier))
     if front:
         fx, fy = [], []
         for j, (x, y) in enumerate(front):
@@ -82,33 +103,68 @@ def pareto(points, frontier, path, xlabel, ylabel):
                 fy.append(fy[-1])
             fx.append(x)
             fy.append(y)
-        ax.plot(fx, fy, color="black", linewidth=1, linestyle="--", zorder=2, label="Pareto frontier")
+        ax.plot(fx, fy, color="#888888", linewidth=1, linestyle="--", zorder=2)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.axhline(floor, color="#999999", linewidth=0.6)
-    ax.text(ax.get_xlim()[0], floor, " no errors", va="bottom", fontsize=7, color="#666666")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
     ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    ax.tick_params(labelsize=7)
+
+
+def pareto_panels(panels, path, xlabel, ylabel):
+    """panels: [(mode, [(group, [(name, x ns, y rate)])], every point of the mode, the names on its
+    Pareto frontier)]: a row per group, a column per mode, shared axes; the dashed line is the
+    mode's frontier over every group, its points ringed in red."""
+    cols = max(1, len(panels))
+    rows = max([len(groups) for _, groups, _, _ in panels] + [1])
+    fig, axes = plt.subplots(rows, cols, figsize=(10, 2.9 * rows + 0.6), sharex=True, sharey=True, squeeze=False)
+    ys = [p[2] for _, _, points, _ in panels for p in points]
+    positive = [y for y in ys if y > 0]
+    floor = (min(positive) if positive else 1e-3) / 4
+    for c, (mode, groups, every, frontier) in enumerate(panels):
+        for r, (group, points) in enumerate(groups):
+            _pareto_axes(axes[r][c], points, every, frontier, floor)
+            axes[r][c].set_title("%s, %s mode" % (group, mode), fontsize=9)
+        for r in range(len(groups), rows):
+            axes[r][c].axis("off")
+    axes[0][0].text(0.01, 0.02, "bottom line: no errors", transform=axes[0][0].transAxes, fontsize=7, color="#666666")
+    fig.supxlabel(xlabel, fontsize=9)
+    fig.supylabel(ylabel, fontsize=9)
+    fig.tight_layout()
     _save(fig, path)
 
 
-def ratio_lines(series, marks, path, xlabel, ylabel):
-    """series: {name: [(R, ns)]}; marks: [(R, ns, text)] drawn as labelled points."""
-    fig, ax = plt.subplots(figsize=(9, 5.5))
-    for i, (name, pts) in enumerate(series.items()):
-        st = _style(i)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], label=name, color=st["color"],
-                marker=st["marker"], markersize=4, linestyle=st["linestyle"], linewidth=1.2)
-    for r, t, text in marks:
-        ax.plot([r], [t], marker="o", markersize=11, markerfacecolor="none", markeredgecolor="red")
-        ax.annotate(text, (r, t), textcoords="offset points", xytext=(6, -12), fontsize=7, color="red")
-    ax.set_yscale("log")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+def ratio_panels(panels, path, xlabel, ylabel):
+    """panels: [(mode, [(group, {name: [(R, ns)]}, marks [(R, ns, text)])])]: a row per group, a
+    column per mode, shared log y; each line named at its end."""
+    cols = max(1, len(panels))
+    rows = max([len(groups) for _, groups in panels] + [1])
+    fig, axes = plt.subplots(rows, cols, figsize=(10, 2.9 * rows + 0.6), sharex=True, sharey=True, squeeze=False)
+    for c, (mode, groups) in enumerate(panels):
+        for r, (group, series, marks) in enumerate(groups):
+            ax = axes[r][c]
+            ends = []
+            for i, (name, pts) in enumerate(series.items()):
+                st = _safe_style(i)
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], label=name, color=st["color"],
+                        marker=st["marker"], markersize=3, linestyle=st["linestyle"], linewidth=1.2)
+                ends.append((pts[-1][0], pts[-1][1], name, st["color"]))
+            # The break-evens are circled, not labelled: their labels crowd each other, and the
+            # section's table lists them.
+            for mr, mt, _ in marks:
+                ax.plot([mr], [mt], marker="o", markersize=9, markerfacecolor="none", markeredgecolor="red")
+            ax.set_yscale("log")
+            ax.set_xlim(-0.03, 1.45)  # room for the names at the lines' ends
+            ax.set_xticks([0, 0.2, 0.4, 0.6, 0.8, 1.0])
+            ax.set_title("%s, %s mode" % (group, mode), fontsize=9)
+            ax.grid(True, which="both", alpha=0.25)
+            ax.tick_params(labelsize=7)
+            _label_ends(ax, ends)
+        for r in range(len(groups), rows):
+            axes[r][c].axis("off")
+    fig.supxlabel(xlabel, fontsize=9)
+    fig.supylabel(ylabel, fontsize=9)
+    fig.tight_layout()
     _save(fig, path)
 
 

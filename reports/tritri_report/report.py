@@ -24,6 +24,11 @@ class Run:
         self.bench = self.d.get("bench")
         self.floors = data.floors(self.bench)
         self.reference = data.reference(self.bench)
+        self.modes = data.bench_modes(self.bench)
+        # The mode of a part that shows one: call (every test called the same way, one pair at a
+        # time) when it was timed.
+        self.mode = "call" if "call" in self.modes else (self.modes[0] if self.modes else None)
+        self.cpu, self.isa = data.platform(self.bench)
         self.folders = published.folders_of(self.check, self.bench)
         self.published = published.load(self.folders.values())
         self.files_read = [name for role, name in data.FILES.items() if role in self.d]
@@ -47,24 +52,29 @@ class Run:
     def machine(self):
         return self.d.get("provenance", {}).get("machine_name", "this machine")
 
-    def timed_ns(self, algorithm, workload="ratio:0.50"):
-        """(median ns per pair on `workload` at the algorithm's first level, that level)."""
+    def terms(self, mode=None):
+        """What a time was measured in: "call mode, Intel(R) Xeon(R) ..., lane ISA avx512"."""
+        return "%s mode, %s, lane ISA %s" % (mode or self.mode, self.cpu, self.isa)
+
+    def timed_ns(self, algorithm, workload="ratio:0.50", mode=None):
+        """(median ns per pair on `workload` at the algorithm's first level in `mode` (default
+        self.mode), that level)."""
         if not self.bench:
             return None, None
         level = data.primary_levels(self.bench).get(algorithm)
         if level is None:
             return None, None
-        return data.bench_median(self.bench, algorithm, level, workload), level
+        return data.bench_median(self.bench, algorithm, level, workload, mode or self.mode), level
 
-    def ratio_range(self, a, b):
-        """t(a)/t(b) over the ratio pools: (at R = 0.5, min, max, mean), or None."""
+    def ratio_range(self, a, b, mode=None):
+        """t(a)/t(b) over the ratio pools in `mode`: (at R = 0.5, min, max, mean), or None."""
         if not self.bench:
             return None
         levels = data.primary_levels(self.bench)
         vals, mid = [], None
         for r, w in data.ratio_workloads(self.bench):
-            ta = data.bench_median(self.bench, a, levels.get(a), w)
-            tb = data.bench_median(self.bench, b, levels.get(b), w)
+            ta = data.bench_median(self.bench, a, levels.get(a), w, mode or self.mode)
+            tb = data.bench_median(self.bench, b, levels.get(b), w, mode or self.mode)
             if ta and tb:
                 vals.append(ta / tb)
                 if abs(r - 0.5) < 1e-9:
@@ -73,8 +83,8 @@ class Run:
             return None
         return mid, min(vals), max(vals), sum(vals) / len(vals)
 
-    def ratio_series(self):
-        """({algorithm: [(R, ns)]}, {algorithm: {R: spread}}) at each one's first level."""
+    def ratio_series(self, mode=None):
+        """({algorithm: [(R, ns)]}, {algorithm: {R: spread}}) at each one's first level, in `mode`."""
         series, spreads = OrderedDict(), {}
         if not self.bench:
             return series, spreads
@@ -83,7 +93,7 @@ class Run:
                 continue
             pts, sp = [], {}
             for r, w in data.ratio_workloads(self.bench):
-                e = data.bench_entry(self.bench, a, level, w)
+                e = data.bench_entry(self.bench, a, level, w, mode or self.mode)
                 if e and e.get("ns_per_pair_median") is not None:
                     pts.append((r, e["ns_per_pair_median"]))
                     sp[r] = e.get("spread")

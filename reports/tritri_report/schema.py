@@ -23,9 +23,14 @@ KINDS = {
         "tallies[].segment.answered", "tallies[].segment.measured", "tallies[].segment.max_error",
         "tallies[].segment.median_error", "tallies[].segment.kind_mismatches",
         "tallies[].segment.not_computed", "failures"]),
-    "bench": ("tritri.schema", {"tritri-bench/1"}, [
+    # Version 1 timed every benchmark in batch mode (a result without `mode` is read as batch);
+    # version 2 has the mode as an axis of every result.
+    "bench": ("tritri.schema", {"tritri-bench/1", "tritri-bench/2"}, [
         "tritri.reference", "tritri.results[].algorithm", "tritri.results[].level",
-        "tritri.results[].workload", "tritri.harness.floor_share_of_fastest"]),
+        "tritri.results[].workload"]),
+    "bench/tritri-bench/2": ("tritri.schema", {"tritri-bench/2"}, [
+        "tritri.modes", "tritri.cpu_model", "tritri.isa", "tritri.results[].stage",
+        "tritri.results[].mode", "tritri.harness.floors", "tritri.harness.floor_share"]),
     "diff": ("schema", {"tritri-diff/1"}, [
         "case_count", "inputs", "pairs[].a", "pairs[].b", "pairs[].differ", "pairs[].overlap_differ",
         "pairs[].fate_differ", "pairs[].families[].family", "pairs[].families[].differ", "pairs[].examples"]),
@@ -86,4 +91,6 @@ def check(doc, kind, path):
         found = _missing(doc, key_path.split("."), "")
         if found:
             raise SchemaError("%s: missing required key %s" % (path, found))
+    if version_key is not None and "%s/%s" % (kind, version) in KINDS:
+        return check(doc, "%s/%s" % (kind, version), path)  # the keys of that version alone
     return doc

@@ -36,7 +36,8 @@ def our_times(run, t1):
     if not run.bench:
         return {}
     level = data.primary_levels(run.bench).get(t1["algorithm"])
-    return {k: data.bench_median(run.bench, t1["algorithm"], level, t1["workload_prefix"] + k) if level else None
+    return {k: data.bench_median(run.bench, t1["algorithm"], level, t1["workload_prefix"] + k, run.mode)
+            if level else None
             for k in t1["seconds_per_pair"]}
 
 

@@ -1,25 +1,28 @@
 """Part 3: time per pair against the share of intersecting pairs, break-even points, and the
 pools of one intersection type or one corpus family."""
 
-from .. import analysis, data, figures
+from collections import OrderedDict
+
+from .. import analysis, data, figures, kinds
 from ..markdown import NOT_MEASURED, ns, table
+from . import summary
 
 TITLE = "Time against intersection ratio"
 
 
 def published_marks(run, series):
-    """Crossings a paper published a break-even for: ([(R, ns, label)], the sentence naming them)."""
+    """Crossings a paper published a break-even for: ([(R, ns, label, {a, b})], the sentence naming them)."""
     marks, names = [], []
     for a, b, what in run.published_crossings():
         if a not in series or b not in series:
             continue
         names.append("%s and %s%s" % (a, b, " (%s)" % what if what else ""))
         for r, t, _ in analysis.crossings(series[a], series[b]):
-            marks.append((r, t, "%s=%s @%.2f" % (a, b, r)))
+            marks.append((r, t, "%s=%s @%.2f" % (a, b, r), {a, b}))
     return marks, "".join(", and where %s cross" % n for n in names)
 
 
-def reference_crossings(run, series, spreads):
+def reference_crossings(run, series, spreads, mode):
     ref = run.reference
     rows = []
     if ref not in series:
@@ -28,7 +31,7 @@ def reference_crossings(run, series, spreads):
         if a == ref or a in run.floors:
             continue
         for r, t, noisy in analysis.crossings(series[ref], series[a], spreads.get(ref), spreads.get(a)):
-            rows.append([ref + " / " + a, "%.2f" % r, ns(t), "within noise" if noisy else ""])
+            rows.append([ref + " / " + a, mode, "%.2f" % r, ns(t), "within noise" if noisy else ""])
     return rows
 
 
@@ -36,41 +39,70 @@ def render(run, part):
     if not run.bench or not data.ratio_workloads(run.bench):
         part.add("The ratio workloads of `tritri bench`: %s.\n" % NOT_MEASURED)
         return
-    series, spreads = run.ratio_series()
-    env = analysis.envelope_changes({a: p for a, p in series.items() if a not in run.floors})
-    marks, also = published_marks(run, series)
-    marks = [(r, t, "%s→%s @%.2f" % (a, b, r)) for r, t, a, b in env] + marks
-    fig = part.figure("time-ratio.png", figures.ratio_lines, series, marks,
+    per_mode = OrderedDict((m, run.ratio_series(m)) for m in run.modes)
+    envs, panels, also = OrderedDict(), [], ""
+    for mode, (series, spreads) in per_mode.items():
+        envs[mode] = analysis.envelope_changes({a: p for a, p in series.items() if a not in run.floors})
+        marks, also = published_marks(run, series)
+        marks = [(r, t, "%s→%s @%.2f" % (a, b, r), {a, b}) for r, t, a, b in envs[mode]] + marks
+        panels.append((mode, group_panels(run, series, marks)))
+    fig = part.figure("time-ratio.png", figures.ratio_panels, panels,
                       xlabel="intersection ratio R (share of the pool's pairs that intersect)",
                       ylabel="ns per pair (median, log scale)")
     pool = (run.bench.get("context", {}) or {}).get("pool_size", "?")
     part.add("Median ns per pair on pools of %s distinct pairs of which exactly R intersect, each algorithm "
-             "at its first level. Red circles: break-even points where the fastest algorithm changes%s.\n"
-             % (pool, also))
+             "at its first level, %s, on %s (lane algorithms on %s); one panel per group of algorithms and "
+             "mode, each line named at its end. Red circles: break-even points where the fastest algorithm "
+             "changes%s (listed below).\n"
+             % (pool, summary.mode_words(run.modes), run.cpu, run.isa, also))
     part.add("![time against intersection ratio](%s)\n" % fig)
     rs = [r for r, _ in data.ratio_workloads(run.bench)]
-    rows = [[a] + [ns(dict(pts).get(r)) for r in rs] for a, pts in series.items()]
-    part.add(table(["algorithm"] + ["%.1f" % r for r in rs], rows))
-    part.add("Break-even points where the fastest algorithm changes:\n")
-    if env:
-        part.add(table(["R", "ns/pair", "fastest before", "fastest after"],
-                       [["%.2f" % r, ns(t), a, b] for r, t, a, b in env]))
+    rows = []
+    for a in all_names(per_mode):
+        for mode, (series, _) in per_mode.items():
+            if a in series:
+                rows.append([a, mode] + [ns(dict(series[a]).get(r)) for r in rs])
+    part.add(table(["algorithm", "mode"] + ["%.1f" % r for r in rs], rows))
+    part.add("Break-even points where the fastest algorithm changes, per mode:\n")
+    env_rows = [["%.2f" % r, mode, ns(t), a, b] for mode, env in envs.items() for r, t, a, b in env]
+    if env_rows:
+        part.add(table(["R", "mode", "ns/pair", "fastest before", "fastest after"], env_rows))
     else:
-        part.add("None: one algorithm is fastest at every R.\n")
-    part.add("Every crossing with %s (linear between measured R; \"within noise\": the gap at both "
-             "ends is smaller than the repetitions' spread):\n" % run.reference)
-    pair_rows = reference_crossings(run, series, spreads)
-    part.add(table(["pair", "R", "ns/pair", "note"], pair_rows) if pair_rows else "None.\n")
+        part.add("None: one algorithm is fastest at every R, in every mode.\n")
+    part.add("Every crossing with %s in the same mode (linear between measured R; \"within noise\": the gap "
+             "at both ends is smaller than the repetitions' spread):\n" % run.reference)
+    pair_rows = [row for mode, (series, spreads) in per_mode.items()
+                 for row in reference_crossings(run, series, spreads, mode)]
+    part.add(table(["pair", "mode", "R", "ns/pair", "note"], pair_rows) if pair_rows else "None.\n")
     other_workloads(run, part)
+
+
+def group_panels(run, series, marks):
+    """[(group, its series, the marks of its algorithms)] (kinds.py); the floor `null` beside
+    the published ports, as the line every other lies above."""
+    out = []
+    for group, names in kinds.split(run, [a for a in series if a not in run.floors]):
+        shown = names + ([f for f in series if f in run.floors] if group == kinds.GROUPS[0] else [])
+        out.append((group, OrderedDict((a, series[a]) for a in shown),
+                    [(r, t, text) for r, t, text, who in marks if who & set(names)]))
+    return out
+
+
+def all_names(per_mode):
+    """The algorithms of every mode's series, in first-seen order."""
+    names = []
+    for series, _ in per_mode.values():
+        names += [a for a in series if a not in names]
+    return names
 
 
 OTHER_WORKLOADS = (
     ("type:", "Time per intersection type",
      "Pools of only disjoint, point, segment or area pairs (the oracle's dimension), "
-     "median ns per pair at each algorithm's first level:"),
+     "median ns per pair at each algorithm's first level, per mode:"),
     ("family:", "Time on the corpus families",
      "One pool per corpus family (%s): what singular and near-singular input costs, median ns per "
-     "pair; `!` marks a time measured on a pool where the algorithm answers some pairs wrongly."),
+     "pair per mode; `!` marks a time measured on a pool where the algorithm answers some pairs wrongly."),
 )
 
 
@@ -88,17 +120,15 @@ def other_workloads(run, part):
             continue
         if "%s" in intro:
             intro = intro % ((run.bench.get("context") or {}).get("family_source", "the corpus generator's"))
-        rows = []
-        for a, level in levels.items():
-            if a == data.HARNESS_FLOOR:
-                continue
-            row = [a]
-            for w in workloads:
-                e = data.bench_entry(run.bench, a, level, w)
-                cell = ns(e.get("ns_per_pair_median")) if e else "-"
-                if e and prefix == "family:" and e.get("wrong") and a not in run.floors:
-                    cell += " !"
-                row.append(cell)
-            rows.append(row)
+        rows = [[a, mode] + [workload_cell(run, a, level, w, mode, prefix) for w in workloads]
+                for a, level in levels.items() if a != data.HARNESS_FLOOR for mode in run.modes]
         part.add(intro + "\n")
-        part.add(table(["algorithm"] + [w.split(":", 1)[1] for w in workloads], rows))
+        part.add(table(["algorithm", "mode"] + [w.split(":", 1)[1] for w in workloads], rows))
+
+
+def workload_cell(run, a, level, w, mode, prefix):
+    e = data.bench_entry(run.bench, a, level, w, mode)
+    cell = ns(e.get("ns_per_pair_median")) if e else "-"
+    if e and prefix == "family:" and e.get("wrong") and a not in run.floors:
+        cell += " !"
+    return cell

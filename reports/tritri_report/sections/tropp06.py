@@ -10,11 +10,11 @@ LEVEL, NUMBERED = papers.SUBSECTION
 FOLDER = "tropp06"
 
 
-def means_over_ratio_pools(bench, algorithm):
+def means_over_ratio_pools(bench, algorithm, mode):
     """(operations per pair, ns per pair), each the mean over the ratio pools, at the overlap level."""
     ops, times = [], []
     for _, w in data.ratio_workloads(bench):
-        e = data.bench_entry(bench, algorithm, "overlap", w)
+        e = data.bench_entry(bench, algorithm, "overlap", w, mode)
         if e:
             o = data.ops_total(e)
             if o is not None:
@@ -30,7 +30,7 @@ def compare(run, part, doc):
     levels = data.primary_levels(run.bench)
     earlier = [a for a in doc["earlier_tests"] if levels.get(a) == "overlap"]
     ports = run.ports(FOLDER) or [ours]
-    measured = {a: means_over_ratio_pools(run.bench, a) for a in ports + earlier}
+    measured = {a: means_over_ratio_pools(run.bench, a, run.mode) for a in ports + earlier}
     ops_t = {a: m[0] for a, m in measured.items()}
     time_t = {a: m[1] for a, m in measured.items()}
     rows = [row for row in (speed_row(faster, ours, earlier, time_t, run.reference),
