@@ -1,4 +1,4 @@
-// guigue03-lanes (README.md, "guigue03-lanes"): the published overlap test on SIMD lanes of pairs,
+// guigue03-lanes (README.md, "Lane control"): the published overlap test on SIMD lanes of pairs,
 // lanes_kernel.inc compiled for each instruction set (algorithms/lanes/foreach_isa.hpp), answer for
 // answer the port's, which it calls itself for tails and for the lanes it does not decide.
 #include "algorithms/guigue03/guigue03.hpp"

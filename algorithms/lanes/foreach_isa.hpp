@@ -67,6 +67,8 @@ void register_lanes(tritri::Registry& registry, tritri::Algorithm variant) {
   variant.set_batch<tritri::Level::overlap>(tritri::Scalar::double_, [](const TrianglePair* p, std::size_t n, Overlap* out) {
     batch(tritri::lanes::active(), p, n, out);
   });
+  // One pair per call is the port itself: a lane control is a way of running it over many pairs.
+  variant.set_one_pair<tritri::Level::overlap>([](const TrianglePair& p) { return port(p) ? Overlap::yes : Overlap::no; });
   variant.counters = tritri::lanes::path_counters();
   registry.add(std::move(variant));
 }

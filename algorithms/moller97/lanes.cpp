@@ -1,4 +1,4 @@
-// moller97-lanes (README.md, "moller97-lanes"): the published test (divisions, EPSILON snap) on SIMD lanes of pairs,
+// moller97-lanes (README.md, "Lane control"): the published test (divisions, EPSILON snap) on SIMD lanes of pairs,
 // lanes_kernel.inc compiled for each instruction set (algorithms/lanes/foreach_isa.hpp), answer for
 // answer the port's, which it calls itself for tails and for the lanes it does not decide.
 #include "algorithms/moller97/moller97.hpp"

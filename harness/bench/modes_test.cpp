@@ -7,6 +7,7 @@
 #include "harness/bench/report.hpp"
 #include "harness/bench/test_support.hpp"
 #include "algorithms/moller97/moller97.hpp"
+#include "tritri/add_level.hpp"
 #include "tritri/isa.hpp"
 
 #include <gtest/gtest.h>

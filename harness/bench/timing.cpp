@@ -61,7 +61,7 @@ void time_stage(benchmark::State& state, StageRunBatch run, const TrianglePair* 
 // One pair per call through `fn` (a function pointer), `call(fn, pair)` making the call and
 // folding its answer. The empty asm makes the pointer opaque to the compiler on every pair, so
 // it can neither inline the test nor hoist or vectorise anything across calls: each pair is a
-// real indirect call, as a BVH traversal makes (harness/bench/README.md, "Modes", says how the
+// real indirect call, as a BVH traversal makes (harness/bench/README.md, "What is measured", says how the
 // generated loop was checked).
 template <class Fn, class Call>
 void time_calls(benchmark::State& state, Fn fn, Call call, const TrianglePair* pairs, std::size_t n) {
@@ -90,7 +90,7 @@ void time_entry_level(benchmark::State& state, const Algorithm& a, Mode mode, co
   } else if (const PairFn<L> one = a.one_pair<L>()) {
     time_calls(state, one, [](PairFn<L> f, const TrianglePair& p) { return fold_answer(f(p)); }, pairs, n);
   } else {
-    const auto one_of_batch = [](LevelBatch<L> f, const TrianglePair& p) {
+    const auto one_of_batch = [](BatchFn<L> f, const TrianglePair& p) {
       AnswerOf<L> answer{};
       f(&p, 1, &answer);
       return fold_answer(answer);
@@ -200,8 +200,7 @@ const Algorithm& harness_floor() {
     f.name = "floor";
     f.summary = "the harness floor: reads every coordinate (integer XOR, no dependency chain), returns a bit";
     f.accepts_degenerate = true;
-    f.set_batch<Level::overlap>(Scalar::double_, overlap_batch<&floor_kernel>);
-    f.set_one_pair<Level::overlap>(&one_pair_of<Level::overlap, &floor_kernel>);
+    add_level<Level::overlap>(f, [](const TrianglePair& p) { return floor_kernel(p); });
     return f;
   }();
   return a;

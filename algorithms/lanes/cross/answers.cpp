@@ -1,7 +1,7 @@
 // The algorithms layer alone, for a cross build (aarch64, scripts/cross-answers): reads case files
 // and prints each named algorithm's overlap answer per case, `algorithm<TAB>case<TAB>0|1|2`. It
 // links nothing but the layer and Eigen, so it reads the case files itself (only the name and the
-// 18 coordinates of each line; labels are ignored) rather than through cases/casefile.
+// 18 coordinates of each line; labels are ignored) rather than through cases/casefile.hpp.
 //   answers ALGORITHM[,ALGORITHM...] FILE...
 #include "tritri/algorithm.hpp"
 
