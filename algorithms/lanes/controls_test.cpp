@@ -1,5 +1,5 @@
 // Every lane control (a registered algorithm NAME-lanes) answers every pair as its scalar port NAME
-// does, on the instruction set TRITRI_LANES_ISA names: ctest runs this once per set of this
+// does, on the instruction set TRITRI_ISA names: ctest runs this once per set of this
 // architecture (CMakeLists.txt), skipped where the CPU lacks it. The pools: the quick corpus,
 // random pairs, small-integer pairs (zero signs, coplanar pairs), pairs a hair from each other's
 // plane around moller97's EPSILON, and pairs with NaN, infinite and signed-zero coordinates;
@@ -78,7 +78,7 @@ std::vector<Overlap> answers(const Algorithm& a, const std::vector<TrianglePair>
 }
 
 TEST(LaneControls, AnswerEveryPairAsTheirPortsOnTheChosenInstructionSet) {
-  const std::string setting = std::getenv("TRITRI_LANES_ISA") ? std::getenv("TRITRI_LANES_ISA") : "";
+  const std::string setting = std::getenv(kIsaVariable) ? std::getenv(kIsaVariable) : "";
   for (Isa named : kIsas)
     if (to_string(named) == setting && !supported(named)) GTEST_SKIP() << setting << " is not on this CPU";
   const Isa isa = active();

@@ -1,15 +1,15 @@
 // The instruction sets a lane kernel is compiled for, which one runs, and the batch driver that
 // hands a kernel its whole blocks of W pairs and the scalar port the rest.
 //
-// Chosen once per process: the widest set this CPU runs (x86-64: __builtin_cpu_supports, which
-// also checks that the OS saves the wider registers), or a narrower one named in the
-// environment, TRITRI_LANES_ISA=scalar|sse2|avx2|avx512|neon (README.md). Header-only: a kernel's
+// Chosen once per process: the widest set this CPU runs, or a narrower one named in the
+// environment, TRITRI_ISA=scalar|sse2|avx2|avx512|neon (tritri/isa.hpp, README.md). Header-only: a kernel's
 // folder is compiled twice (the v3fma build variant, algorithms/README.md), and each build gets
 // its own copy of everything here.
 #pragma once
 
 #include "tritri/algorithm.hpp"
 #include "tritri/answers.hpp"
+#include "tritri/isa.hpp"
 
 #include <array>
 #include <cstddef>
@@ -38,15 +38,10 @@ namespace tritri::lanes {
 // A kernel loads a pair as 18 consecutive doubles (t1's three vertices, then t2's, x y z each).
 static_assert(sizeof(TrianglePair) == 18 * sizeof(double), "TrianglePair must be 18 packed doubles");
 
-// Ordered by width within an architecture: an override may only narrow (x86-64: scalar < sse2 <
-// avx2 < avx512; aarch64: scalar < neon).
-enum class Isa : std::uint8_t { scalar = 0, sse2 = 1, avx2 = 2, avx512 = 3, neon = 4 };
-inline constexpr std::array<Isa, 5> kIsas = {Isa::scalar, Isa::sse2, Isa::avx2, Isa::avx512, Isa::neon};
-
-constexpr std::string_view to_string(Isa isa) {
-  constexpr std::array<std::string_view, 5> names = {"scalar", "sse2", "avx2", "avx512", "neon"};
-  return names[static_cast<std::size_t>(isa)];
-}
+// The instruction sets, their names, the machine's and the one asked for (TRITRI_ISA) are the
+// API's: tritri/isa.hpp.
+using tritri::Isa;
+using tritri::kIsas;
 
 // Doubles per vector: pairs per block.
 constexpr std::size_t width(Isa isa) {
@@ -54,51 +49,10 @@ constexpr std::size_t width(Isa isa) {
   return widths[static_cast<std::size_t>(isa)];
 }
 
-// The widest instruction set this machine runs that kernels are compiled for here.
-inline Isa detected() {
-#if TRITRI_LANES_X86
-  static const bool avx512 = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f"));
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx512 ? Isa::avx512 : avx2 ? Isa::avx2 : Isa::sse2;
-#elif TRITRI_LANES_NEON
-  return Isa::neon;
-#else
-  return Isa::scalar;
-#endif
-}
-
-// `isa` can run here: scalar always; otherwise a set of this architecture no wider than detected().
-inline bool supported(Isa isa) {
-  const Isa best = detected();
-  if (isa == Isa::scalar || isa == best) return true;
-  if (best == Isa::neon || isa == Isa::neon) return false;
-  return static_cast<int>(isa) < static_cast<int>(best);
-}
-
-// The name in `setting` as an Isa this machine runs; otherwise one line on stderr saying why, and
-// the detected set (an unknown name is a usage error: exit status 2, as tritri's bad arguments).
-inline Isa parse_override(std::string_view setting) {
-  for (Isa isa : kIsas) {
-    if (setting != to_string(isa)) continue;
-    if (supported(isa)) return isa;
-    std::fprintf(stderr, "tritri: TRITRI_LANES_ISA=%.*s is not supported by this CPU; the lane kernels use %.*s\n",
-                 static_cast<int>(setting.size()), setting.data(), static_cast<int>(to_string(detected()).size()),
-                 to_string(detected()).data());
-    return detected();
-  }
-  std::fprintf(stderr, "tritri: TRITRI_LANES_ISA=%.*s: unknown instruction set (scalar, sse2, avx2, avx512, neon)\n",
-               static_cast<int>(setting.size()), setting.data());
-  std::exit(2);
-}
-
+inline Isa detected() { return machine_isa(); }
+inline bool supported(Isa isa) { return isa_runs_here(isa); }
 // The set the batch entry points use.
-inline Isa active() {
-  static const Isa isa = [] {
-    const char* setting = std::getenv("TRITRI_LANES_ISA");
-    return setting && *setting ? parse_override(setting) : detected();
-  }();
-  return isa;
-}
+inline Isa active() { return requested_isa(); }
 
 // Where this thread's lane batches went (cumulative; for an algorithm's PathCounters).
 struct Stats {

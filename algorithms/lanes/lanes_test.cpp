@@ -32,11 +32,11 @@ TEST(LaneIsa, NamesWidthsAndSupport) {
   EXPECT_TRUE(supported(Isa::sse2));
   EXPECT_FALSE(supported(Isa::neon));
 #endif
-  EXPECT_EQ(parse_override("scalar"), Isa::scalar);
+  EXPECT_EQ(isa_from_setting("scalar"), Isa::scalar);
 }
 
 TEST(LaneIsa, AnUnknownOverrideIsAUsageError) {
-  EXPECT_EXIT(parse_override("avx3"), testing::ExitedWithCode(2), "TRITRI_LANES_ISA=avx3: unknown instruction set");
+  EXPECT_EXIT(isa_from_setting("avx3"), testing::ExitedWithCode(2), "TRITRI_ISA=avx3: unknown instruction set");
 }
 
 // Values that break careless lane code: NaN, infinities, signed zeros, subnormals, ties.

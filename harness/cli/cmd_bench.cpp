@@ -51,7 +51,8 @@ constexpr const char* kHelp =
     "                       both   each, side by side (the main job, scripts/run)\n"
     "                     Stages are timed in batch mode whatever the mode. The floors are timed\n"
     "                     in every mode, and their share is given per test and mode\n"
-    "  --isa NAME         scalar, sse2, avx2 or avx512: every lane algorithm (exact) runs on at\n"
+    "  --isa NAME         scalar, sse2, avx2, avx512 (neon on aarch64): every lane algorithm\n"
+    "                     (exact, guigue03-lanes, moller97-lanes) runs on at\n"
     "                     most NAME, to show the times on an older CPU; refused when this\n"
     "                     machine lacks NAME. Sets TRITRI_ISA (tritri/isa.hpp), which they read;\n"
     "                     the JSON records the ISA used, the machine's and the CPU model\n"
@@ -99,8 +100,8 @@ constexpr const char* kHelpAfterTimeout =
 void request_isa(const std::optional<std::string>& name) {
   if (!name) return;
   const auto isa = parse_isa(*name);
-  if (!isa) throw UsageError("unknown --isa '" + *name + "' (scalar, sse2, avx2, avx512)");
-  if (*isa > machine_isa())
+  if (!isa) throw UsageError("unknown --isa '" + *name + "' (scalar, sse2, avx2, avx512, neon)");
+  if (!isa_runs_here(*isa))
     throw UsageError("--isa " + *name + ": this machine (" + bench::cpu_model() + ") runs at most " +
                      std::string(to_string(machine_isa())));
   setenv(kIsaVariable, name->c_str(), 1);
