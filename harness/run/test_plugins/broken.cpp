@@ -2,9 +2,8 @@
 // coordinate is 13, aborts when one is 99, and loops forever when one is 666. Otherwise it
 // answers with a bounding-box test (right for disjoint boxes, often wrong otherwise).
 //
-// Built in several flavours (compile definitions) to test the loader's refusals, and two
-// well-behaved ones for timing tests: BROKEN_WELL_BEHAVED never misbehaves, and BROKEN_SPIN=N
-// does the same work N times per pair (a known, injected slowdown). BROKEN_FLIP_AT=V flips the
+// Built in several flavours (compile definitions) to test the loader's refusals, and a
+// well-behaved one for the bench's tests: BROKEN_WELL_BEHAVED never misbehaves. BROKEN_FLIP_AT=V flips the
 // answer on every pair with a coordinate equal to V: a deliberately changed answer, for the gate.
 #include "tritri/plugin.h"
 
@@ -43,22 +42,12 @@ void misbehave(const double* pair) {
     }
 }
 
-#ifndef BROKEN_SPIN
-#define BROKEN_SPIN 1
-#endif
-
 [[maybe_unused]] void overlap(const double* pairs, size_t n, unsigned char* out) {
   for (size_t i = 0; i < n; ++i) {
 #ifndef BROKEN_WELL_BEHAVED
     misbehave(pairs + 18 * i);
 #endif
-    bool answer = false;
-    for (int k = 0; k < BROKEN_SPIN; ++k) {
-      volatile const double* p = pairs + 18 * i;  // volatile: every repetition really reads the pair
-      double copy[18];
-      for (int j = 0; j < 18; ++j) copy[j] = p[j];
-      answer = boxes_overlap(copy);
-    }
+    bool answer = boxes_overlap(pairs + 18 * i);
 #ifdef BROKEN_FLIP_AT
     if (has(pairs + 18 * i, BROKEN_FLIP_AT)) answer = !answer;
 #endif
