@@ -105,6 +105,10 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
     answers[index[f.index]].fate = f.fate;
     answers[index[f.index]].fault = f.detail;
   }
+  for (std::size_t k = got.stopped_at; k < index.size(); ++k) {
+    answers[index[k]].fate = Fate::not_run;
+    answers[index[k]].fault = "not run: the run stopped at the fault limit (--max-faults)";
+  }
   for (std::size_t k = 0; k < index.size(); ++k) {
     Answers& a = answers[index[k]];
     if (a.fate != Fate::ok) continue;
@@ -129,6 +133,10 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
   auto fail = [&](Level level, std::string answer, std::string expected) {
     failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected), ""});
   };
+  if (a.fate == Fate::not_run) {
+    ++tally.not_run;
+    return tally;
+  }
   if (a.fate != Fate::ok) {
     ++(a.fate == Fate::crash ? tally.crashes : tally.timeouts);
     failures.push_back({algorithm.name, i, Level::overlap, to_string(a.fate), overlap_word(truth.overlap), a.fault});
@@ -190,6 +198,7 @@ void add_tally(Tally& into, const Tally& t) {
   into.unsupported += t.unsupported;
   into.crashes += t.crashes;
   into.timeouts += t.timeouts;
+  into.not_run += t.not_run;
   for (const auto& [cell, count] : t.confusion) into.confusion[cell] += count;
   add_tally(into.segment, t.segment);
 }

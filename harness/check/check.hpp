@@ -70,6 +70,7 @@ struct Tally {
   std::size_t unsupported = 0;      // declined by the algorithm or, for degenerate input, the harness
   std::size_t crashes = 0;          // the algorithm crashed (signal, exception) on the case
   std::size_t timeouts = 0;         // the algorithm made no progress within the time limit
+  std::size_t not_run = 0;          // its run stopped at the fault limit before this case
   Confusion confusion;              // relation level only; every scored case, diagonal included
   SegmentTally segment;             // segment level only
 };

@@ -161,6 +161,30 @@ void print_check_table(std::ostream& out, const CheckResult& result) {
   }
 }
 
+bool is_complete(const CheckResult& result) {
+  for (const auto& [key, tally] : result.tallies)
+    if (tally.not_run) return false;
+  return true;
+}
+
+bool report_incomplete(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases) {
+  for (const Algorithm* a : result.algorithms) {
+    std::size_t not_run = 0, faults = 0;
+    for (const auto& group : result.groups)
+      if (auto it = result.tallies.find({a->name, group}); it != result.tallies.end())
+        not_run += it->second.not_run, faults += it->second.crashes + it->second.timeouts;
+    if (!not_run) continue;
+    out << "tritri: " << a->name << " stopped after " << faults << " crashes or timeouts (--max-faults): " << not_run
+        << " of its cases not run; the first:";
+    std::size_t shown = 0;
+    for (const Failure& f : result.failures)
+      if (f.algorithm == a->name && !f.detail.empty() && shown++ < 3)
+        out << ' ' << cases[f.case_index].name << " (" << f.detail << ")";
+    out << "\n";
+  }
+  return !is_complete(result);
+}
+
 void print_failures(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
                     std::size_t limit) {
   std::size_t shown = 0;
@@ -199,6 +223,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
   doc["inputs"] = inputs;
   doc["corpus"] = corpus_json(corpus);
   doc["case_count"] = cases.size();
+  doc["complete"] = is_complete(result);  // false: an algorithm stopped at the fault limit
   doc["algorithms"] = nlohmann::json::array();
   for (const Algorithm* a : result.algorithms) doc["algorithms"].push_back(algorithm_json(*a));
   doc["group_by"] = nlohmann::json::array();
@@ -233,6 +258,7 @@ void write_check_json(std::ostream& out, const CheckResult& result, const std::v
                                 {"unsupported", t.unsupported},
                                 {"crashes", t.crashes},
                                 {"timeouts", t.timeouts},
+                                {"not_run", t.not_run},
                                 {"confusion", confusion},
                                 {"segment", segment}});
     }

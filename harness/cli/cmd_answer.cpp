@@ -37,7 +37,8 @@ int cmd_answer(int argc, char** argv) {
                  "x,y,z for a point, x,y,z;x,y,z for a segment, or empty/area/coplanar/unsupported.\n"
                  "'-' marks a level the algorithm does not answer. A degenerate case that the\n"
                  "algorithm does not accept is answered 'unsupported' without calling it. A case on\n"
-                 "which the algorithm crashed or hung is answered 'crash' or 'timeout' in every column.\n\n"
+                 "which the algorithm crashed or hung is answered 'crash' or 'timeout' in every column,\n"
+                 "and one it did not reach after --max-faults faults 'not-run' (exit status 1).\n\n"
               << kRunOptionsHelp << '\n' << kListsHelp;
     return kOk;
   }
@@ -62,7 +63,7 @@ int cmd_answer(int argc, char** argv) {
               << (!algorithm.answers(Level::segment) ? "-" : a.declined ? "unsupported" : segment_text(a.segment))
               << '\n';
   }
-  return kOk;
+  return report_stopped(std::cerr, algorithm, cases, answers) ? kFindings : kOk;
 }
 
 }  // namespace tritri::cli

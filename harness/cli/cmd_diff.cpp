@@ -37,6 +37,7 @@ struct PairResult {
   bool segment = false;  // both answer the segment level: it is compared too
   bool judged = false;   // --oracle: the overlap differences are judged
   std::size_t overlap_differ = 0, segment_differ = 0, fate_differ = 0;
+  bool incomplete = false;  // a side stopped at the fault limit (--max-faults)
   std::map<std::string, FamilyTally> families;
   std::vector<Difference> differences;
 };
@@ -78,6 +79,8 @@ PairResult compare_pair(const Algorithm& a, const Algorithm& b, const std::vecto
   r.judged = !truths.empty();
   const auto answers_a = answer_cases(a, cases, isolation);
   const auto answers_b = answer_cases(b, cases, isolation);
+  r.incomplete = report_stopped(std::cerr, a, cases, answers_a);
+  r.incomplete = report_stopped(std::cerr, b, cases, answers_b) || r.incomplete;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Answers& x = answers_a[i];
     const Answers& y = answers_b[i];
@@ -230,13 +233,15 @@ int cmd_diff(int argc, char** argv) {
   }
   nlohmann::json out = {{"schema", "tritri-diff/1"}, {"inputs", args.positional()}, {"case_count", cases.size()}};
   out["pairs"] = nlohmann::json::array();
-  bool any = false;
+  bool any = false, complete = true;
   for (const auto& [a, b] : pairs) {
     const PairResult r = compare_pair(*a, *b, cases, truths, isolation);
     any = any || total(r) > 0;
+    complete = complete && !r.incomplete;
     print_pair(std::cout, r, cases, max_examples);
     out["pairs"].push_back(pair_json(r, cases, max_examples));
   }
+  out["complete"] = complete;  // false: a side stopped at the fault limit; its cases not run differ
   if (auto path = args.value("--json"))
     write_file_atomically(*path, [&](std::ostream& o) { o << out.dump(1) << '\n'; });
   return any ? kFindings : kOk;

@@ -57,6 +57,7 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
 
 #include "harness/cli/args.hpp"
 #include "cases/casefile.hpp"
+#include "harness/check/check.hpp"
 #include "harness/run/isolation.hpp"
 
 #include <set>
@@ -76,5 +77,9 @@ extern const std::string kRunOptionsHelp;
 void load_external_algorithms(const Args& args);
 IsolationOptions isolation_options(const Args& args);
 std::string vec_text(const Vec3<double>& v);
+// When `algorithm`'s run stopped at the fault limit (--max-faults): one line on `out` naming it,
+// its first faulting cases and how many were not run, and true (the command then exits 1).
+bool report_stopped(std::ostream& out, const Algorithm& algorithm, const std::vector<Case>& cases,
+                    const std::vector<Answers>& answers);
 
 }  // namespace tritri::cli

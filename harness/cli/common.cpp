@@ -5,6 +5,7 @@
 #include "harness/run/process_plugin.hpp"
 
 #include <map>
+#include <ostream>
 
 namespace tritri::cli {
 
@@ -30,7 +31,7 @@ std::vector<Case> load_cases(const std::vector<std::string>& files) {
   return all;
 }
 
-const OptionSpec kRunOptions = {.valued = {"--exec", "--exec-name", "--timeout"},
+const OptionSpec kRunOptions = {.valued = {"--exec", "--exec-name", "--timeout", "--max-faults"},
                                 .lists = {"--plugin"},
                                 .flags = {"--no-isolation"}};
 // The defaults shown are the ones used: IsolationOptions' and ProcessPluginOptions' (harness/run/).
@@ -42,6 +43,9 @@ const std::string kRunOptionsHelp =
     "  --timeout S          a case that makes no progress for S seconds is a timeout (default " +
     format_double(IsolationOptions{}.stall_seconds) + ";\n                       " +
     format_double(ProcessPluginOptions{}.timeout_seconds) + " per case for --exec)\n" +
+    "  --max-faults N       after N crashes or timeouts of one algorithm its run stops: the rest of\n"
+    "                       its cases are not run, the result says so and the exit status is 1\n"
+    "                       (default " + std::to_string(IsolationOptions{}.max_faults) + "; 0: no limit)\n"
     "  --no-isolation       run algorithms in this process (for a debugger; a crash ends the run)\n";
 
 void load_external_algorithms(const Args& args) {
@@ -60,7 +64,22 @@ IsolationOptions isolation_options(const Args& args) {
   IsolationOptions options;
   options.enabled = !args.flag("--no-isolation");
   options.stall_seconds = args.seconds("--timeout").value_or(options.stall_seconds);
+  options.max_faults = args.count("--max-faults", options.max_faults);
   return options;
+}
+
+bool report_stopped(std::ostream& out, const Algorithm& algorithm, const std::vector<Case>& cases,
+                    const std::vector<Answers>& answers) {
+  std::size_t not_run = 0, faults = 0;
+  std::string first;
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    if (answers[i].fate == Fate::not_run) ++not_run;
+    else if (answers[i].fate != Fate::ok && faults++ < 3) first += " " + cases[i].name + " (" + answers[i].fault + ")";
+  }
+  if (!not_run) return false;
+  out << "tritri: " << algorithm.name << " stopped after " << faults << " crashes or timeouts (--max-faults): "
+      << not_run << " of " << answers.size() << " cases not run; the first:" << first << '\n';
+  return true;
 }
 
 std::string vec_text(const Vec3<double>& v) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string_view>
 
 namespace tritri {
@@ -121,6 +123,33 @@ TEST(ProcessPlugin, ACommandThatCannotRunIsAClearError) {
   const Outcome r = run_tritri("check --exec '/nonexistent/plugin' " + kBuiltin);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("did not answer a probe case"), std::string::npos) << r.out;
+}
+
+// A build that hangs on every case is stopped after --max-faults timeouts, told so in one line
+// naming the first faulting cases and how many were not run; answer, check and diff exit 1, and
+// check's JSON says the run is incomplete.
+TEST(FaultLimit, AHangingBuildStopsAfterMaxFaultsInAnswerCheckAndDiff) {
+  std::string text;
+  for (int i = 0; i < 40; ++i)
+    text += "hang-" + std::to_string(i) + " 0 0 0 4 0 0 0 4 0  666 1 -1 1 1 1 2 2 1  family=f\n";
+  const auto cases = scratch_file("fault-limit.cases", text);
+  const std::string broken = "--plugin " + plugin_library("tritri_broken") + " --timeout 0.2 --max-faults 3 ";
+  Outcome r = run_tritri("answer " + broken + "--algo broken " + cases);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("tritri: broken stopped after 3 crashes or timeouts (--max-faults): 37 of 40 cases not run; "
+                       "the first: hang-0 (no progress for 0.2 s) hang-1"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("hang-39\tnot-run\tnot-run\tnot-run"), std::string::npos) << r.out;
+  const auto json = scratch_file("fault-limit.json", "");
+  r = run_tritri("check " + broken + "--algo broken --quiet --json " + json + " " + cases);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("37 of its cases not run"), std::string::npos) << r.out;
+  std::ifstream in(json);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(written.find("\"complete\": false"), std::string::npos) << written.substr(0, 400);
+  r = run_tritri("diff " + broken + "--pair broken=moller97 " + cases);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("37 of 40 cases not run"), std::string::npos) << r.out;
 }
 
 }  // namespace

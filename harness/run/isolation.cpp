@@ -106,19 +106,21 @@ Attempt run_child(std::size_t begin, std::size_t end, std::size_t chunk,
   }
 }
 
-// [begin, end) failed as a whole: find each case that fails on its own by halving.
-void bisect(std::size_t begin, std::size_t end, const Attempt& failure,
-            const std::function<void(std::size_t, std::size_t)>& work, double stall_seconds,
-            std::vector<Fault>& faults) {
-  if (end - begin == 1) {
-    faults.push_back({begin, failure.fate, failure.detail});
-    return;
+// [begin, end) failed as a whole: each case that fails is found by running the range again one
+// case per progress step, so that a child that dies or hangs names its case by how far it got;
+// the rest of the range goes on in a fresh child. One child per fault: a build that hangs on
+// every case costs one stall per case, not a halving search of each chunk.
+// Returns the first case not run when `limit` faults were reached, else `end`.
+std::size_t isolate(std::size_t begin, std::size_t end, const std::function<void(std::size_t, std::size_t)>& work,
+                    double stall_seconds, std::size_t limit, std::vector<Fault>& faults) {
+  for (std::size_t next = begin; next < end;) {
+    if (limit && faults.size() >= limit) return next;
+    const Attempt a = run_child(next, end, 1, work, stall_seconds);
+    if (a.ok) break;
+    faults.push_back({next + a.done, a.fate, a.detail});
+    next += a.done + 1;
   }
-  const std::size_t mid = begin + (end - begin) / 2;
-  for (auto [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
-    const Attempt a = run_child(b, e, e - b, work, stall_seconds);
-    if (!a.ok) bisect(b, e, a, work, stall_seconds, faults);
-  }
+  return end;
 }
 
 }  // namespace
@@ -128,13 +130,15 @@ std::string to_string(Fate f) {
     case Fate::ok: return "ok";
     case Fate::crash: return "crash";
     case Fate::timeout: return "timeout";
+    case Fate::not_run: return "not-run";
   }
   return "?";
 }
 
 std::vector<Fault> run_isolated(std::size_t n, const std::function<void(std::size_t, std::size_t)>& work,
-                                const IsolationOptions& options) {
+                                const IsolationOptions& options, std::size_t* stopped_at) {
   std::vector<Fault> faults;
+  if (stopped_at) *stopped_at = n;
   const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
   if (!options.enabled) {
     for (std::size_t b = 0; b < n; b += chunk) work(b, std::min(n, b + chunk));
@@ -147,10 +151,12 @@ std::vector<Fault> run_isolated(std::size_t n, const std::function<void(std::siz
     // The child finished `a.done` cases; the failure is in the chunk after them.
     const std::size_t bad_begin = next + a.done;
     const std::size_t bad_end = std::min(n, bad_begin + chunk);
-    bisect(bad_begin, bad_end, a, work, options.stall_seconds, faults);
-    next = bad_end;
+    next = isolate(bad_begin, bad_end, work, options.stall_seconds, options.max_faults, faults);
+    if (next < n && options.max_faults && faults.size() >= options.max_faults) {
+      if (stopped_at) *stopped_at = next;
+      return faults;
+    }
   }
-  std::sort(faults.begin(), faults.end(), [](const Fault& x, const Fault& y) { return x.index < y.index; });
   return faults;
 }
 

@@ -17,7 +17,8 @@
 
 namespace tritri {
 
-enum class Fate : std::uint8_t { ok, crash, timeout };
+// not_run: the run stopped at the fault limit (IsolationOptions::max_faults) before this case.
+enum class Fate : std::uint8_t { ok, crash, timeout, not_run };
 
 struct Fault {
   std::size_t index = 0;
@@ -29,13 +30,19 @@ struct IsolationOptions {
   bool enabled = true;            // false: run in this process (faster, no protection)
   double stall_seconds = 2.0;     // a chunk that makes no progress for this long is a timeout
   std::size_t chunk = 64;         // cases per progress step
+  // After this many crashes or timeouts the run stops and the remaining cases are not run, so
+  // that a build that fails on every case is told so in seconds (each timeout costs
+  // stall_seconds); 0: no limit.
+  std::size_t max_faults = 20;
 };
 
 // Calls `work(begin, end)` over consecutive chunks of [0, n). `work` must write its results to
 // memory the parent can see (SharedArray below). Returns the cases that crashed or timed out;
-// every other case completed. With isolation disabled, exceptions propagate.
+// every other case before `*stopped_at` completed. `*stopped_at` (when given) is n, or the first
+// case not run once options.max_faults faults were found. With isolation disabled, exceptions
+// propagate.
 std::vector<Fault> run_isolated(std::size_t n, const std::function<void(std::size_t, std::size_t)>& work,
-                                const IsolationOptions& options = {});
+                                const IsolationOptions& options = {}, std::size_t* stopped_at = nullptr);
 
 // A fixed-size array in anonymous shared memory, so a forked child's writes are seen by the
 // parent. T must be plain data in practice: its bytes are its value and nothing needs destroying

@@ -43,6 +43,44 @@ TEST(Isolation, FindsEveryBadCaseAndKeepsTheRest) {
   }
 }
 
+// A build that hangs on every case is stopped after max_faults timeouts, each found by one child
+// (the case it made no progress on), with the first case not run named; the cases before the
+// first fault are computed.
+TEST(Isolation, StopsAtTheFaultLimitAndSaysWhereItStopped) {
+  constexpr std::size_t n = 1000;
+  SharedArray<long> out(n);
+  auto work = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i >= 40) for (volatile bool forever = true; forever;) {}
+      out[i] = 1;
+    }
+  };
+  IsolationOptions options;
+  options.stall_seconds = 0.1;
+  options.chunk = 16;
+  options.max_faults = 3;
+  std::size_t stopped_at = 0;
+  const auto faults = run_isolated(n, work, options, &stopped_at);
+  ASSERT_EQ(faults.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(faults[k].index, 40 + k);
+    EXPECT_EQ(faults[k].fate, Fate::timeout);
+  }
+  EXPECT_EQ(stopped_at, 43u);
+  for (std::size_t i = 0; i < 40; ++i) EXPECT_EQ(out[i], 1) << i;
+  // No limit: every case is tried.
+  options.max_faults = 0;
+  SharedArray<long> few(50);
+  const auto all = run_isolated(50, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      if (i % 10 == 3) std::abort();
+      few[i] = 1;
+    }
+  }, options, &stopped_at);
+  EXPECT_EQ(all.size(), 5u);
+  EXPECT_EQ(stopped_at, 50u);
+}
+
 TEST(Isolation, AGoodWorkerRunsInOneChildWithNoFaults) {
   SharedArray<int> out(1000);
   const auto faults = run_isolated(1000, [&](std::size_t b, std::size_t e) {

@@ -122,6 +122,7 @@ ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std
   } restore{&previous};
 
   ProcessAnswers result;
+  result.stopped_at = pairs.size();
   result.overlap.assign(pairs.size(), Overlap::unsupported);
   result.relation.assign(pairs.size(), RelationAnswer{});
   int relation_seen = -1;  // unknown until the first answer
@@ -147,6 +148,10 @@ ProcessAnswers run_process_plugin(const ProcessPluginOptions& options, const std
         result.faults.push_back({i, Fate::timeout, "no answer within " + format_double(limit) + " s"});
       else
         result.faults.push_back({i, Fate::crash, "the process ended (" + ended + ")"});
+      if (options.max_faults && result.faults.size() >= options.max_faults && i + 1 < pairs.size()) {
+        result.stopped_at = i + 1;
+        break;
+      }
       child = std::make_unique<Child>(options.command);
       fresh = true;
       continue;

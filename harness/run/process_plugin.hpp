@@ -25,6 +25,7 @@ namespace tritri {
 struct ProcessPluginOptions {
   std::string command;
   double timeout_seconds = 5.0;  // per case
+  std::size_t max_faults = 0;    // stop after this many crashes or timeouts (IsolationOptions); 0: never
 };
 
 struct ProcessAnswers {
@@ -32,6 +33,7 @@ struct ProcessAnswers {
   std::vector<RelationAnswer> relation;
   bool answers_relation = false;
   std::vector<Fault> faults;  // cases that crashed or timed out
+  std::size_t stopped_at = 0;  // the number of pairs, or the first not run at the fault limit
 };
 
 // Throws InputError (the user's command) on a protocol error; std::runtime_error when no pipe or

@@ -7,11 +7,13 @@
 namespace tritri {
 namespace {
 
-RunAnswers run_process(const ProcessPluginOptions& process, const Algorithm& algorithm,
+RunAnswers run_process(ProcessPluginOptions process, const Algorithm& algorithm,
                        const std::vector<std::string>& names, const std::vector<TrianglePair>& pairs,
-                       LevelSet levels) {
+                       LevelSet levels, std::size_t max_faults) {
+  process.max_faults = max_faults;
   ProcessAnswers got = run_process_plugin(process, names, pairs);
   RunAnswers out;
+  out.stopped_at = got.stopped_at;
   if (levels.contains(Level::overlap)) out.overlap = std::move(got.overlap);
   if (levels.contains(Level::relation) && algorithm.answers(Level::relation)) out.relation = std::move(got.relation);
   out.faults = std::move(got.faults);
@@ -40,7 +42,7 @@ RunAnswers run_batches(const Algorithm& algorithm, const std::vector<TrianglePai
     for_each_level([&](auto level) {
       if (wanted(level())) algorithm.batch<level()>()(pairs.data() + begin, end - begin, arrays_of(level).first->data() + begin);
     });
-  }, isolation);
+  }, isolation, &out.stopped_at);
   for_each_level([&](auto level) {
     auto [from, to] = arrays_of(level);
     if (wanted(level())) to->assign(from->data(), from->data() + pairs.size());
@@ -53,7 +55,7 @@ RunAnswers run_batches(const Algorithm& algorithm, const std::vector<TrianglePai
 RunAnswers run_algorithm(const Algorithm& algorithm, const std::vector<std::string>& names,
                          const std::vector<TrianglePair>& pairs, LevelSet levels, const IsolationOptions& isolation) {
   if (const ProcessPluginOptions* process = find_process_plugin(algorithm.name))
-    return run_process(*process, algorithm, names, pairs, levels);
+    return run_process(*process, algorithm, names, pairs, levels, isolation.max_faults);
   return run_batches(algorithm, pairs, levels, isolation);
 }
 

@@ -16,6 +16,9 @@ struct RunAnswers {
   std::vector<RelationAnswer> relation;
   std::vector<SegmentAnswer> segment;
   std::vector<Fault> faults;  // pairs it crashed or hung on; their answers are the defaults
+  // The number of pairs, or the first pair not run: the run stopped after
+  // IsolationOptions::max_faults faults, and the pairs from here on have no answer.
+  std::size_t stopped_at = 0;
 };
 
 // Answers `pairs` at the levels of `levels` the algorithm answers. `names` name the pairs for an
