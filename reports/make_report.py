@@ -26,11 +26,12 @@ def main(argv=None):
     r = report.build_report(args.results_dir, args.out_dir)
     print("report: %s (%d figures)" % (os.path.join(args.out_dir, "README.md"), len(r.figures)), file=sys.stderr)
     if args.summary:
-        rows = report.summary_rows(args.results_dir)
+        modes, rows = report.summary_rows(args.results_dir)
         if rows:
-            print("%-18s %14s %16s %10s" % ("algorithm", "overlap errors", "err. singular", "ns/pair"))
-            for a, errors, rate, t in rows:
-                print("%-18s %14d %16s %10s" % (a, errors, rate, t))
+            print("%-18s %14s %16s" % ("algorithm", "overlap errors", "err. singular")
+                  + "".join(" %14s" % ("ns/pair " + (m or "")).strip() for m in modes))
+            for a, errors, rate, times in rows:
+                print("%-18s %14d %16s" % (a, errors, rate) + "".join(" %14s" % t for t in times))
     return 0
 
 

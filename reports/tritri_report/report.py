@@ -202,12 +202,13 @@ def build_report(results_dir, out_dir):
 
 
 def summary_rows(results_dir):
-    """A short table for the terminal: algorithm, overlap errors, error rate (singular), ns/pair."""
+    """A short table for the terminal: the timing modes of the run, then per algorithm its overlap
+    errors, error rate (singular) and ns/pair in each mode."""
     run = Run(results_dir)
+    modes = run.modes or [None]
     rows = []
     for a in run.algorithms():
         sing = data.totals(run.check, a, predicate=lambda f: f not in data.SINGULAR_EXCLUDED)
         allt = data.totals(run.check, a)
-        t, _ = run.timed_ns(a)
-        rows.append((a, allt.fp + allt.fn, pct(sing.overlap_error_rate()), ns(t)))
-    return rows
+        rows.append((a, allt.fp + allt.fn, pct(sing.overlap_error_rate()), [ns(run.timed_ns(a, mode=m)[0]) for m in modes]))
+    return modes, rows
