@@ -48,16 +48,11 @@ inline const char* to_string(Isa isa) {
   return "?";
 }
 
-// The widest instruction set this machine runs.
+// The widest instruction set this machine runs that exact's kernels are compiled for here (the
+// machine's, tritri/isa.hpp: same names and order for these four).
 inline Isa detected_isa() {
 #if TRITRI_EXACT_X86
-  static const Isa isa = [] {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f")) return Isa::avx512;
-    if (__builtin_cpu_supports("avx2")) return Isa::avx2;
-    return Isa::sse2;
-  }();
-  return isa;
+  return static_cast<Isa>(tritri::machine_isa());
 #else
   return Isa::scalar;
 #endif
