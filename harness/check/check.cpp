@@ -6,6 +6,8 @@
 #include "cases/util/stats.hpp"
 
 #include <algorithm>
+#include <ostream>
+#include <optional>
 #include <cstdio>
 #include <exception>
 #include <limits>
@@ -203,9 +205,27 @@ void add_tally(Tally& into, const Tally& t) {
   add_tally(into.segment, t.segment);
 }
 
+std::optional<StoppedRun> stopped_run(const Algorithm& algorithm, const std::vector<Case>& cases,
+                                      const std::vector<Answers>& answers) {
+  StoppedRun run{algorithm.name, 0, 0, answers.size(), ""};
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    if (answers[i].fate == Fate::not_run) ++run.not_run;
+    else if (answers[i].fate != Fate::ok && run.faults++ < 3)
+      run.first += " " + cases[i].name + " (" + answers[i].fault + ")";
+  }
+  if (!run.not_run) return std::nullopt;
+  return run;
+}
+
+void print_stopped(std::ostream& out, const StoppedRun& run) {
+  out << "tritri: " << run.algorithm << " stopped after " << run.faults << " crashes or timeouts (--max-faults): "
+      << run.not_run << " of " << run.cases << " cases not run; the first:" << run.first << '\n';
+}
+
 void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
            CheckResult& result) {
+  if (auto stopped = stopped_run(algorithm, cases, answers)) result.stopped.push_back(*stopped);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Tally one = score_case(algorithm, i, cases[i], oracle[i], answers[i], result.failures);
     for (const std::string& group : groups_of(cases[i], result.groupings)) {

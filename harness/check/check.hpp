@@ -8,6 +8,8 @@
 #include "cases/oracle/oracle.hpp"
 #include "tritri/algorithm.hpp"
 
+#include <iosfwd>
+#include <optional>
 #include <map>
 #include <string>
 #include <vector>
@@ -86,6 +88,18 @@ double hausdorff_distance(const Vec3<double>& a0, const Vec3<double>& a1, const 
 // The diagonal of the pair's axis-aligned bounding box: the scale segment errors are relative to.
 double pair_size(const TrianglePair& pair);
 
+// An algorithm's run that stopped at the fault limit (IsolationOptions::max_faults): its faults,
+// the cases not run, of how many, and the first faulting cases as "name (detail)" words.
+struct StoppedRun {
+  std::string algorithm;
+  std::size_t faults = 0, not_run = 0, cases = 0;
+  std::string first;
+};
+std::optional<StoppedRun> stopped_run(const Algorithm& algorithm, const std::vector<Case>& cases,
+                                      const std::vector<Answers>& answers);
+// One line: the algorithm, its faults, the cases not run, the first faulting cases.
+void print_stopped(std::ostream& out, const StoppedRun& run);
+
 struct CheckResult {
   std::vector<const Algorithm*> algorithms;
   std::vector<Grouping> groupings;    // none: tallied per family (grouping.hpp)
@@ -94,6 +108,7 @@ struct CheckResult {
   std::vector<std::string> groups;
   std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, group)
   std::vector<Failure> failures;
+  std::vector<StoppedRun> stopped;  // the runs stopped at the fault limit: the check is incomplete
 };
 
 // Scores one algorithm's answers against the oracle and adds them to `result`, each case to the

@@ -161,27 +161,10 @@ void print_check_table(std::ostream& out, const CheckResult& result) {
   }
 }
 
-bool is_complete(const CheckResult& result) {
-  for (const auto& [key, tally] : result.tallies)
-    if (tally.not_run) return false;
-  return true;
-}
+bool is_complete(const CheckResult& result) { return result.stopped.empty(); }
 
-bool report_incomplete(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases) {
-  for (const Algorithm* a : result.algorithms) {
-    std::size_t not_run = 0, faults = 0;
-    for (const auto& group : result.groups)
-      if (auto it = result.tallies.find({a->name, group}); it != result.tallies.end())
-        not_run += it->second.not_run, faults += it->second.crashes + it->second.timeouts;
-    if (!not_run) continue;
-    out << "tritri: " << a->name << " stopped after " << faults << " crashes or timeouts (--max-faults): " << not_run
-        << " of its cases not run; the first:";
-    std::size_t shown = 0;
-    for (const Failure& f : result.failures)
-      if (f.algorithm == a->name && !f.detail.empty() && shown++ < 3)
-        out << ' ' << cases[f.case_index].name << " (" << f.detail << ")";
-    out << "\n";
-  }
+bool report_incomplete(std::ostream& out, const CheckResult& result) {
+  for (const StoppedRun& run : result.stopped) print_stopped(out, run);
   return !is_complete(result);
 }
 

@@ -20,7 +20,7 @@ void print_check_table(std::ostream& out, const CheckResult& result);
 // For each algorithm whose run stopped at the fault limit (IsolationOptions::max_faults): one
 // line naming it, its first faulting cases and how many cases were not run. True when any did:
 // the run is incomplete (the JSON's "complete" is false) and check exits 1.
-bool report_incomplete(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases);
+bool report_incomplete(std::ostream& out, const CheckResult& result);
 bool is_complete(const CheckResult& result);
 
 // Per algorithm × family, the relation (or dimension) answered against the oracle's, as

@@ -70,16 +70,9 @@ IsolationOptions isolation_options(const Args& args) {
 
 bool report_stopped(std::ostream& out, const Algorithm& algorithm, const std::vector<Case>& cases,
                     const std::vector<Answers>& answers) {
-  std::size_t not_run = 0, faults = 0;
-  std::string first;
-  for (std::size_t i = 0; i < answers.size(); ++i) {
-    if (answers[i].fate == Fate::not_run) ++not_run;
-    else if (answers[i].fate != Fate::ok && faults++ < 3) first += " " + cases[i].name + " (" + answers[i].fault + ")";
-  }
-  if (!not_run) return false;
-  out << "tritri: " << algorithm.name << " stopped after " << faults << " crashes or timeouts (--max-faults): "
-      << not_run << " of " << answers.size() << " cases not run; the first:" << first << '\n';
-  return true;
+  const auto stopped = stopped_run(algorithm, cases, answers);
+  if (stopped) print_stopped(out, *stopped);
+  return stopped.has_value();
 }
 
 std::string vec_text(const Vec3<double>& v) {
