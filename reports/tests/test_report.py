@@ -16,6 +16,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 
 from tritri_report import analysis, groups, markdown, published, report  # noqa: E402
+from tritri_report.sections import time_ratio  # noqa: E402
 
 FIXTURE = os.path.join(HERE, "fixture")
 
@@ -203,6 +204,19 @@ class ReportFromFixture(unittest.TestCase):
                 w = "ratio:%.2f" % float(rtext)
                 e, = in_mode(self.bench["tritri"]["results"], r[1], algorithm=r[0], level=level, workload=w)
                 self.assertEqual(cell, ns_text(e["ns_per_pair_median"]), (r[0], w))
+
+    def test_ratio_part_states_the_spread_from_the_bench(self):
+        part = section(self.text, "3 Time against intersection ratio")
+        h = self.bench["tritri"]["harness"]
+        self.assertIn("%.0f%% at the median benchmark and %.0f%% at the worst"
+                      % (100 * h["spread_median"], 100 * h["spread_worst"]), part)
+
+    def test_spread_sentence_counts_the_repetitions(self):
+        bench = {"benchmarks": [{"repetitions": 5}, {"repetitions": 5}],
+                 "tritri": {"harness": {"spread_median": 0.04, "spread_worst": 0.5}}}
+        self.assertIn("median of 5 repetitions; their spread (slowest over fastest, minus one) is 4% at the "
+                      "median benchmark and 50% at the worst", time_ratio.spread_sentence(bench))
+        self.assertIn("not recorded", time_ratio.spread_sentence({"tritri": {}}))
 
     def test_type_table_matches_bench(self):
         (header, rows), = tables_in(self.text, "3.1 Time per intersection type")

@@ -217,6 +217,14 @@ def bench_entry(bench, algorithm, level, workload, mode=None):
     return found[0] if found else None
 
 
+def repetition_spread(bench):
+    """(repetitions per benchmark, their spread at the median benchmark, at the worst): the spread
+    is the slowest repetition over the fastest, minus one, as `tritri bench` records it."""
+    reps = sorted({b.get("repetitions") for b in bench.get("benchmarks", []) if b.get("repetitions")})
+    harness = (bench.get("tritri") or {}).get("harness") or {}
+    return reps, harness.get("spread_median"), harness.get("spread_worst")
+
+
 def bench_median(bench, algorithm, level, workload, mode=None):
     e = bench_entry(bench, algorithm, level, workload, mode)
     return e.get("ns_per_pair_median") if e else None

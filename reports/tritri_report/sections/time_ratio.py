@@ -56,6 +56,7 @@ def render(run, part):
              "changes%s (listed below).\n"
              % (pool, summary.mode_words(run.modes), run.cpu, run.isa, also))
     part.add("![time against intersection ratio](%s)\n" % fig)
+    part.add(spread_sentence(run.bench))
     rs = [r for r, _ in data.ratio_workloads(run.bench)]
     rows = []
     for a in all_names(per_mode):
@@ -75,6 +76,17 @@ def render(run, part):
                  for row in reference_crossings(run, series, spreads, mode)]
     part.add(table(["pair", "mode", "R", "ns/pair", "note"], pair_rows) if pair_rows else "None.\n")
     other_workloads(run, part)
+
+
+def spread_sentence(bench):
+    """How far a median here can be trusted: the repetitions behind it and how much they differ."""
+    reps, median, worst = data.repetition_spread(bench)
+    if median is None:
+        return "The repetitions' spread: not recorded.\n"
+    count = ("" if not reps else " of %d" % reps[0] if len(reps) == 1 else " of %d to %d" % (reps[0], reps[-1]))
+    return ("Each time is the median%s repetitions; their spread (slowest over fastest, minus one) is "
+            "%.0f%% at the median benchmark and %.0f%% at the worst: differences smaller than the spread "
+            "are not measured here.\n" % (count, 100 * median, 100 * (worst or median)))
 
 
 def group_panels(run, series, marks):
