@@ -12,7 +12,7 @@
 // ctest runs a small share (--random=20000 --scale=0.05); the full run (1,000,000 random pairs,
 // about 2 million in all, minutes) is a separate command: build/bin/exact_diff --full-corpus.
 #include "algorithms/exact/exact.hpp"
-#include "harness/testing/exact_pairs.hpp"
+#include "cases/generator/exact_pairs.hpp"
 #include "cases/generator/corpus.hpp"
 #include "cases/label.hpp"
 

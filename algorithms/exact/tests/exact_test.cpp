@@ -4,7 +4,7 @@
 // classification against the oracle, and the built-in cases in all 72 orders.
 #include "algorithms/exact/exact.hpp"
 #include "algorithms/exact/tests/expansions.hpp"
-#include "harness/testing/exact_pairs.hpp"
+#include "cases/generator/exact_pairs.hpp"
 #include "cases/casefile.hpp"
 #include "cases/oracle/oracle.hpp"
 

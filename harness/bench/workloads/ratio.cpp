@@ -1,6 +1,6 @@
 #include "harness/bench/workloads/ratio.hpp"
 
-#include "harness/bench/shapes.hpp"
+#include "cases/generator/shapes.hpp"
 #include "harness/bench/workload.hpp"
 
 #include <algorithm>

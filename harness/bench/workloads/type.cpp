@@ -1,6 +1,6 @@
 #include "harness/bench/workloads/type.hpp"
 
-#include "harness/bench/shapes.hpp"
+#include "cases/generator/shapes.hpp"
 #include "harness/bench/workload.hpp"
 
 #include <stdexcept>

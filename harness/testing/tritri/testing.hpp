@@ -37,6 +37,7 @@
 // Its disagreements beyond what it promises are its baseline (`tritri check --baseline`).
 #pragma once
 
+#include "cases/generator/pairs.hpp"
 #include "tritri/algorithm.hpp"
 
 #include <gtest/gtest.h>
@@ -48,16 +49,11 @@
 namespace tritri::testing {
 
 // ---- the pairs the suites draw (tritri's own generator: the same pairs on every toolchain) ----
+// random_pairs, random_grid_pairs, counting_pairs: cases/generator/pairs.hpp says what each is.
 
-// Proper triangles with coordinates uniform in [-1, 1]: general position (touching, coplanar
-// and parallel pairs have probability zero).
-std::vector<TrianglePair> random_pairs(std::uint64_t seed, std::size_t count);
-// Proper triangles with integer coordinates in [-range, range]: vertices on planes, edges and
-// vertices of the other triangle, coplanar pairs; exact in any arithmetic.
-std::vector<TrianglePair> random_grid_pairs(std::uint64_t seed, std::size_t count, int range);
-// Where a counting instantiation must answer exactly as double: random pairs, small-integer
-// pairs (where the last bit decides) and the built-in cases.
-std::vector<TrianglePair> counting_pairs();
+using pairs::counting_pairs;
+using pairs::random_grid_pairs;
+using pairs::random_pairs;
 
 // ---- a function: the overlap suite ----
 

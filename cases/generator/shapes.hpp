@@ -1,5 +1,6 @@
-// Random triangle pairs of the shapes the ratio and type workloads draw from. Everything is drawn
-// from tritri::Rng, so a seed names the same pairs on every toolchain.
+// Random triangle pairs of the shapes the bench's ratio and type workloads, the exact test's
+// generators (exact_pairs.hpp) and the hunt draw from. Everything is drawn from tritri::Rng, so a
+// seed names the same pairs on every toolchain.
 #pragma once
 
 #include "cases/util/random.hpp"
@@ -7,11 +8,18 @@
 
 #include <cstdint>
 
-namespace tritri::bench::shapes {
+namespace tritri::shapes {
 
 using V = Vec3<double>;
 
 V integer_vector(Rng& r, std::int64_t m);  // each coordinate an integer in [-m, m]
+
+V random_in_cube(Rng& r, double half);    // each coordinate uniform in [-half, half]
+// Sizes spread over two orders of magnitude (2^-6 to 1), so small triangles are rejected by the
+// first plane test, long thin ones reach the interval stage, and both kinds meet.
+double mixed_size(Rng& r);
+// Three vertices each uniform in the cube of half-width `size` around `center`.
+Triangle triangle_around(Rng& r, const V& center, double size);
 
 // Two triangles anywhere in the unit cube, of sizes 2^-6 to 1: mostly rejected by a plane test.
 TrianglePair scatter_pair(Rng& r);
@@ -36,4 +44,4 @@ Triangle plane_triangle(Rng& r, const IntegerPlane& plane, std::int64_t ca, std:
 double power_of_two_scale(Rng& r);  // 2^-7 to 2^-3
 TrianglePair scaled(TrianglePair p, double scale);
 
-}  // namespace tritri::bench::shapes
+}  // namespace tritri::shapes

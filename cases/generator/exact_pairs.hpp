@@ -1,46 +1,38 @@
-// Pair generators shared by the differential test, the unit tests and the fuzzer.
+// The exact algorithm's test generators (algorithms/exact/tests): random pairs of mixed sizes,
+// small-integer pairs, and the scalings, translations and perturbations that move them off the
+// grid. Drawn from shapes.hpp's pieces, so the bench, these tests and the hunt share them.
 #pragma once
 
+#include "cases/generator/shapes.hpp"
 #include "cases/util/random.hpp"
 #include "tritri/geometry.hpp"
 
 #include <cmath>
 #include <cstdint>
 
-namespace exact_pairs {
+namespace tritri::exact_pairs {
 
-using tritri::Triangle;
-using tritri::TrianglePair;
-using V = tritri::Vec3<double>;
+using V = Vec3<double>;
 
-// tritri's one generator, under the short names the generators below use.
-struct GenRng : tritri::Rng {
-  using tritri::Rng::Rng;
-  using tritri::Rng::uniform;
-  std::uint64_t bits() { return next(); }
+// tritri's one generator, with uniform() for a draw in [0, 1) as these generators spell it.
+struct GenRng : Rng {
+  using Rng::Rng;
+  using Rng::uniform;
   double uniform() { return unit(); }
-  bool coin() { return next() >> 63; }
 };
 
-inline V cube(GenRng& r, double h) { return {r.uniform(-h, h), r.uniform(-h, h), r.uniform(-h, h)}; }
+inline V cube(GenRng& r, double h) { return shapes::random_in_cube(r, h); }
 
-inline Triangle around(GenRng& r, const V& c, double s) { return {{c + s * cube(r, 1), c + s * cube(r, 1), c + s * cube(r, 1)}}; }
-
-inline double mixed_size(GenRng& r) { return std::exp2(r.uniform(-6.0, 0.0)); }
-
-// Random triangles of mixed sizes: half scattered in the unit cube, half centred on a point of
-// the first triangle (as the bench's ratio pools do).
+// Random triangles of mixed sizes: half scattered in the unit cube (shapes::scatter_pair), half
+// centred on a point of the first triangle.
 inline TrianglePair random_pair(GenRng& r) {
-  if (r.coin()) {
-    const V c1(r.uniform(), r.uniform(), r.uniform()), c2(r.uniform(), r.uniform(), r.uniform());
-    return {around(r, c1, mixed_size(r)), around(r, c2, mixed_size(r))};
-  }
+  if (r.coin()) return shapes::scatter_pair(r);
   const V c(r.uniform(), r.uniform(), r.uniform());
-  const Triangle t1 = around(r, c, mixed_size(r));
+  const Triangle t1 = shapes::triangle_around(r, c, shapes::mixed_size(r));
   double a = r.uniform(), b = r.uniform();
   if (a + b > 1) a = 1 - a, b = 1 - b;
   const V at = t1[0] + a * (t1[1] - t1[0]) + b * (t1[2] - t1[0]);
-  return {t1, around(r, at, mixed_size(r))};
+  return {t1, shapes::triangle_around(r, at, shapes::mixed_size(r))};
 }
 
 inline V int_vec(GenRng& r, int m) {
@@ -106,4 +98,4 @@ inline TrianglePair wide_pair(GenRng& r) {
   return p;
 }
 
-}  // namespace exact_pairs
+}  // namespace tritri::exact_pairs

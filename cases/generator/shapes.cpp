@@ -1,24 +1,18 @@
-#include "harness/bench/shapes.hpp"
+#include "cases/generator/shapes.hpp"
 
 #include <cmath>
 
-namespace tritri::bench::shapes {
-namespace {
-
+namespace tritri::shapes {
 V random_in_cube(Rng& r, double half) {
   return {r.uniform(-half, half), r.uniform(-half, half), r.uniform(-half, half)};
 }
 
-// Sizes spread over two orders of magnitude, so small triangles are rejected by the first plane
-// test, long thin ones reach the interval stage, and both kinds meet.
 double mixed_size(Rng& r) { return std::exp2(r.uniform(-6.0, 0.0)); }
 
 Triangle triangle_around(Rng& r, const V& center, double size) {
   return {{center + size * random_in_cube(r, 1), center + size * random_in_cube(r, 1),
            center + size * random_in_cube(r, 1)}};
 }
-
-}  // namespace
 
 V integer_vector(Rng& r, std::int64_t m) {
   return V(static_cast<double>(r.integer(-m, m)), static_cast<double>(r.integer(-m, m)),
@@ -76,4 +70,4 @@ TrianglePair coplanar_pair(Rng& r) {
                 power_of_two_scale(r));
 }
 
-}  // namespace tritri::bench::shapes
+}  // namespace tritri::shapes
