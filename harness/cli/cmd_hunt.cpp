@@ -128,6 +128,13 @@ int cmd_hunt(int argc, char** argv) {
     run.baselines.push_back(file);
     for (auto& [name, keys] : hunt::read_hunt_baseline(file)) known[name].insert(keys.begin(), keys.end());
   }
+  for (const Algorithm* a : algorithms) {  // before any hunt: a long run does not die at its fifth algorithm
+    try {
+      hunt::check_level(*a, options.level);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
   std::filesystem::create_directories(*out);
   std::vector<hunt::HuntResult> results;
   bool findings = false;
@@ -135,17 +142,14 @@ int cmd_hunt(int argc, char** argv) {
     ProgressLine line(a->name);
     options.known = known[a->name];
     options.progress = [&line](std::size_t p, std::size_t g, std::size_t f, double s) { line.update(p, g, f, s); };
-    try {
-      results.push_back(hunt::run_hunt(*a, options));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
+    results.push_back(hunt::run_hunt(*a, options));
     line.finish();
     print_summary(results.back());
     findings = findings || results.back().stopped || (!run.baselines.empty() && hunt::new_groups(results.back()) > 0);
+    // Written after each algorithm, so an interrupted run keeps what it found.
+    write_file_atomically(*out + "/witnesses.cases", [&](std::ostream& o) { hunt::write_witnesses(o, results, run); });
+    write_file_atomically(*out + "/hunt.json", [&](std::ostream& o) { o << hunt::hunt_json(results, run).dump(2) << '\n'; });
   }
-  write_file_atomically(*out + "/witnesses.cases", [&](std::ostream& o) { hunt::write_witnesses(o, results, run); });
-  write_file_atomically(*out + "/hunt.json", [&](std::ostream& o) { o << hunt::hunt_json(results, run).dump(2) << '\n'; });
   return findings ? kFindings : kOk;
 }
 

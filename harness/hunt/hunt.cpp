@@ -272,10 +272,14 @@ HuntResult Hunter::run() {
 
 }  // namespace
 
+void check_level(const Algorithm& algorithm, Level level) {
+  // Every algorithm answers overlap, directly or through its relation or segment (overlap_of).
+  if (level == Level::relation && !algorithm.answers(Level::relation))
+    throw std::invalid_argument("hunt: " + algorithm.name + " does not answer the relation level");
+}
+
 HuntResult run_hunt(const Algorithm& algorithm, const HuntOptions& options) {
-  if (!algorithm.answers(options.level))
-    throw std::invalid_argument("hunt: " + algorithm.name + " does not answer the " +
-                                std::string(to_string(options.level)) + " level");
+  check_level(algorithm, options.level);
   return Hunter(algorithm, options).run();
 }
 

@@ -78,7 +78,9 @@ struct HuntResult {
   std::vector<TrianglePair> exact_oracle_disagreements;  // should stay empty
 };
 
-// Throws UsageError-like std::invalid_argument when `algorithm` does not answer options.level.
+// Throws std::invalid_argument when options.level is relation and `algorithm` does not answer it
+// (check_level); overlap is judged for every algorithm, as check derives it (overlap_of).
+void check_level(const Algorithm& algorithm, Level level);
 HuntResult run_hunt(const Algorithm& algorithm, const HuntOptions& options);
 
 // The signature's configuration fields of a pair (plane, shared, scale) with the oracle's relation.

@@ -86,7 +86,8 @@ void coordinate_steps(const TrianglePair& p, std::vector<TrianglePair>& out) {
     const double x = coordinate(p, i);
     if (x == 0) continue;
     std::set<double> tries = {0.0, std::nearbyint(x), std::trunc(x), x / 2};
-    for (int bits = 1; bits < significant_bits(x); ++bits) tries.insert(with_bits(x, bits));
+    for (int bits : {1, 2, 3, 4, 6, 8, 12, 16, 24, 32}) tries.insert(with_bits(x, bits));
+    tries.insert(with_bits(x, std::max(1, significant_bits(x) - 1)));
     if (x == std::nearbyint(x)) tries.insert(x - std::copysign(1.0, x));
     for (double v : values)
       if (coordinate_cost(v) <= coordinate_cost(x)) tries.insert(v);
