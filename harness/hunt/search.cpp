@@ -3,6 +3,7 @@
 #include "cases/generator/corpus.hpp"
 #include "cases/generator/exact_pairs.hpp"
 #include "cases/generator/shapes.hpp"
+#include "cases/generator/variants.hpp"
 
 #include <array>
 #include <bit>
@@ -36,26 +37,6 @@ Triangle reordered(const Triangle& t, int order) {
   return {{t[kOrders[order][0]], t[kOrders[order][1]], t[kOrders[order][2]]}};
 }
 
-// Every coordinate through f; false as soon as one is not exact.
-template <class F>
-bool map_coordinates(TrianglePair& p, F f) {
-  for (Triangle* t : {&p.t1, &p.t2})
-    for (auto& v : t->v)
-      for (int axis = 0; axis < 3; ++axis)
-        if (!f(v[axis], axis)) return false;
-  return true;
-}
-
-std::optional<TrianglePair> translated_exactly(TrianglePair p, const V& offset) {
-  const bool exact = map_coordinates(p, [&](double& x, int axis) {
-    const double y = x + offset[axis];
-    if (y - offset[axis] != x || y - x != offset[axis]) return false;  // the sum rounded
-    x = y;
-    return true;
-  });
-  return exact ? std::optional(p) : std::nullopt;
-}
-
 // A signed axis permutation that is not the identity: the same geometry, mirrored or turned.
 TrianglePair axis_permuted(TrianglePair p, Rng& rng) {
   const int order = static_cast<int>(rng.integer(0, 5));
@@ -70,16 +51,6 @@ TrianglePair axis_permuted(TrianglePair p, Rng& rng) {
 
 }  // namespace
 
-std::optional<TrianglePair> scaled_exactly(TrianglePair p, int k) {
-  const bool exact = map_coordinates(p, [k](double& x, int) {
-    const double y = std::ldexp(x, k);
-    if (!std::isfinite(y) || (y != 0 && std::fabs(y) < 0x1p-1022) || std::ldexp(y, -k) != x) return false;
-    x = y;
-    return true;
-  });
-  return exact ? std::optional(p) : std::nullopt;
-}
-
 std::optional<TrianglePair> transformed(const TrianglePair& pair, Transform t, Rng& rng) {
   switch (t) {
     case Transform::none: return pair;
@@ -92,7 +63,7 @@ std::optional<TrianglePair> transformed(const TrianglePair& pair, Transform t, R
     case Transform::axis_permutation: return axis_permuted(pair, rng);
     case Transform::scale: {
       const int k = rng.nonzero_between(-40, 40);
-      return scaled_exactly(pair, k);
+      return corpus::scaled_exactly(pair, k);
     }
     case Transform::translation: {
       const double step = std::ldexp(1.0, rng.between(-10, 30));
@@ -100,7 +71,7 @@ std::optional<TrianglePair> transformed(const TrianglePair& pair, Transform t, R
       do {
         for (int axis = 0; axis < 3; ++axis) offset[axis] = step * rng.between(-1, 1);
       } while (offset.isZero());
-      return translated_exactly(pair, offset);
+      return corpus::translated_exactly(pair, offset);
     }
     case Transform::to_float: return cast<double>(cast<float>(pair));
     case Transform::kCount: break;
@@ -131,11 +102,13 @@ TrianglePair shapes_pair(Rng& rng) {
 TrianglePair dyadic_pair(GenRng& rng) {
   TrianglePair p = exact_pairs::small_int_pair(rng, rng.between(2, 8));
   const int e = rng.between(1, 6);
-  map_coordinates(p, [&](double& x, int) {
-    x = std::ldexp(x, -e);
-    if (rng.integer(0, 3) == 0) x = std::nextafter(static_cast<float>(x), rng.coin() ? 1.0f : -1.0f);
-    return true;
-  });
+  for (Triangle* t : {&p.t1, &p.t2})
+    for (auto& v : t->v)
+      for (int axis = 0; axis < 3; ++axis) {
+        double& x = v[axis];
+        x = std::ldexp(x, -e);
+        if (rng.integer(0, 3) == 0) x = std::nextafter(static_cast<float>(x), rng.coin() ? 1.0f : -1.0f);
+      }
   return p;
 }
 

@@ -51,7 +51,4 @@ std::vector<TrianglePair> walk_pairs(exact_pairs::GenRng& rng, std::size_t count
 // overflows, a translation that is not exact).
 std::optional<TrianglePair> transformed(const TrianglePair& pair, Transform t, Rng& rng);
 
-// Every coordinate times 2^k, or nullopt when one overflows, reaches the subnormals or rounds.
-std::optional<TrianglePair> scaled_exactly(TrianglePair pair, int k);
-
 }  // namespace tritri::hunt

@@ -1,6 +1,6 @@
 #include "harness/hunt/shrink.hpp"
 
-#include "harness/hunt/search.hpp"
+#include "cases/generator/variants.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -62,7 +62,7 @@ void whole_pair_steps(const TrianglePair& p, std::vector<TrianglePair>& out) {
   }
   for (int k : {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48})
     for (int sign : {-1, 1})
-      if (auto q = scaled_exactly(p, sign * k)) out.push_back(*q);
+      if (auto q = corpus::scaled_exactly(p, sign * k)) out.push_back(*q);
   // Grids relative to the pair's largest coordinate 2^top: 2^(top - b) for b = 1, 2, ..., and the
   // integers.
   int top = INT_MIN;
