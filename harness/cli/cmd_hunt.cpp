@@ -29,7 +29,7 @@ constexpr const char* kUsageText =
     "confirmed by the oracle (CGAL). Failures are grouped by a signature: the level, the answer,\n"
     "the oracle's relation, the plane configuration (coplanar, parallel, near_parallel,\n"
     "general), shared vertices, the scale class, and the transformation that broke an\n"
-    "otherwise right answer. Each new group's first failure is then shrunk, one step at a time,\n"
+    "otherwise right answer. Each new group's cheapest failure is then shrunk, one step at a time,\n"
     "each step kept only while the algorithm gives the same wrong answer and the verdict does not\n"
     "change (a vertex to the origin, small integers, few significant bits, 2^k scaling, fewer\n"
     "distinct values), and the witness confirmed by the oracle. A crash or hang is a finding too\n"

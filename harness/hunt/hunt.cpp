@@ -190,7 +190,14 @@ void Hunter::record(const Candidate& c, const Truth& truth, const Judged& j, con
     result_.groups.push_back(g);
     group_truth_.push_back(truth);
   }
-  ++result_.groups[it->second].count;
+  Group& g = result_.groups[it->second];
+  // The cheapest failure of the group is where shrinking starts: a grid pair that fails the same
+  // way shrinks further than the first failure a walk found.
+  if (!added && pair_cost(c.pair) < pair_cost(g.found)) {
+    g.found = g.witness = c.pair;
+    group_truth_[it->second] = truth;
+  }
+  ++g.count;
   ++result_.failures;
   result_.faults += j.fault;
   if (!result_.first_failure_seconds) {

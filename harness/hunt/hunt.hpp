@@ -56,7 +56,7 @@ struct Group {
   std::string source;              // the generator of its first failure
   std::string detail;              // a crash's or timeout's description
   bool known = false;              // in the baseline
-  TrianglePair found;              // its first failure as found
+  TrianglePair found;              // its cheapest failure (pair_cost) as found: where shrinking starts
   TrianglePair witness;            // shrunk (the found pair for faults and known groups)
   int shrink_steps = 0;
   bool confirmed_witness = true;   // the oracle agrees the witness fails (shrinking judged by exact)
