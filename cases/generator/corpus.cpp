@@ -15,11 +15,10 @@
 #include <thread>
 
 namespace tritri::corpus {
-namespace {
 
 // Draws a construction until it is a proper pair in an exact frame. A construction that keeps
 // failing is a bug in the family, not bad luck: say so.
-Construction build(const Family& family, const Config& config, Rng& rng) {
+Construction build_construction(const Family& family, const Config& config, Rng& rng) {
   for (int attempt = 0; attempt < 200; ++attempt) {
     Construction c = config.build(rng);
     std::optional<TrianglePair> moved;
@@ -31,13 +30,15 @@ Construction build(const Family& family, const Config& config, Rng& rng) {
                          " builds only degenerate triangles");
 }
 
+namespace {
+
 bool has_exact_variants(const Family& family) { return family.exact; }
 
 // One base construction and all its variants.
 std::vector<Case> generate_unit(const Family& family, std::size_t index, const CorpusOptions& options) {
   Rng rng(stream_seed(options.seed, family.name, index));
   const Config& config = family.configs[index % family.configs.size()];
-  const Construction built = build(family, config, rng);
+  const Construction built = build_construction(family, config, rng);
 
   Case base;
   base.name = std::string(family.name) + "." + config.name + "." + std::to_string(index);

@@ -31,6 +31,11 @@ CorpusOptions default_options(std::uint64_t seed = 1);
 // 4,000 cases.
 CorpusOptions quick_options(std::uint64_t seed = 1);
 
+// One base construction of `config`, moved into a random exact frame of its kind (or left in its
+// canonical frame when none is exact), redrawn until both triangles are proper. The corpus and
+// the hunt (harness/hunt) build from it.
+Construction build_construction(const Family& family, const Config& config, Rng& rng);
+
 // Throws std::invalid_argument naming an unknown family.
 std::vector<Case> generate_corpus(const CorpusOptions& options);
 

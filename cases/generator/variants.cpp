@@ -62,6 +62,27 @@ double pair_size(const TrianglePair& p) {
 
 }  // namespace
 
+std::optional<TrianglePair> scaled_exactly(TrianglePair p, int k) {
+  const bool exact = map_coordinates(p, [k](double& x, int) {
+    const double y = std::ldexp(x, k);
+    if (x != 0 && (!std::isnormal(y) || std::ldexp(y, -k) != x)) return false;
+    x = y;
+    return true;
+  });
+  return exact ? std::optional(p) : std::nullopt;
+}
+
+std::optional<TrianglePair> translated_exactly(TrianglePair p, const Vec3<double>& offset) {
+  const bool exact = map_coordinates(p, [&](double& x, int i) {
+    // Knuth's TwoSum: the error term is exactly what the sum lost.
+    const double t = offset[i], y = x + t, bb = y - x;
+    if ((x - (y - bb)) + (t - bb) != 0) return false;
+    x = y;
+    return true;
+  });
+  return exact ? std::optional(p) : std::nullopt;
+}
+
 void add_symmetry_variants(const Case& base, int count, Rng& rng, std::vector<Case>& out) {
   std::vector<int> chosen(72);
   for (int i = 0; i < 72; ++i) chosen[i] = i;
@@ -84,18 +105,12 @@ void add_symmetry_variants(const Case& base, int count, Rng& rng, std::vector<Ca
 void add_scale_variants(const Case& base, int count, Rng& rng, std::vector<Case>& out) {
   for (int attempt = 0, made = 0; made < count && attempt < 8 * count; ++attempt) {
     const int k = rng.nonzero_between(-40, 40);
-    TrianglePair p = base.pair;
-    const bool exact = map_coordinates(p, [k](double& x, int) {
-      const double y = std::ldexp(x, k);
-      if (x != 0 && (!std::isnormal(y) || std::ldexp(y, -k) != x)) return false;
-      x = y;
-      return true;
-    });
+    const std::optional<TrianglePair> p = scaled_exactly(base.pair, k);
     const std::string name = "scale-" + exponent_text(k);
-    if (!exact || std::any_of(out.begin(), out.end(), [&](const Case& c) { return c.name == base.name + "." + name; }))
+    if (!p || std::any_of(out.begin(), out.end(), [&](const Case& c) { return c.name == base.name + "." + name; }))
       continue;
     Case c = variant_of(base, name, "scale", exponent_text(k), true);
-    c.pair = p;
+    c.pair = *p;
     out.push_back(std::move(c));
     ++made;
   }
@@ -109,19 +124,12 @@ void add_translate_variants(const Case& base, int count, Rng& rng, std::vector<C
       for (int& si : s) si = rng.between(-1, 1);
     while (s[0] == 0 && s[1] == 0 && s[2] == 0);
     const double step = std::ldexp(1.0, k);
-    TrianglePair p = base.pair;
-    const bool exact = map_coordinates(p, [&](double& x, int i) {
-      // Knuth's TwoSum: the error term is exactly what the sum lost.
-      const double t = s[i] * step, y = x + t, bb = y - x;
-      if ((x - (y - bb)) + (t - bb) != 0) return false;
-      x = y;
-      return true;
-    });
-    if (!exact) continue;
+    const std::optional<TrianglePair> p = translated_exactly(base.pair, V3(s[0] * step, s[1] * step, s[2] * step));
+    if (!p) continue;
     const std::string transform = exponent_text(k) + "*(" + std::to_string(s[0]) + "," + std::to_string(s[1]) +
                                   "," + std::to_string(s[2]) + ")";
     Case c = variant_of(base, "translate-" + std::to_string(made), "translate", transform, true);
-    c.pair = p;
+    c.pair = *p;
     out.push_back(std::move(c));
     ++made;
   }

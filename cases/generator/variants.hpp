@@ -6,6 +6,7 @@
 #include "cases/casefile.hpp"
 #include "cases/util/random.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace tritri::corpus {
@@ -17,6 +18,11 @@ struct VariantPlan {
   int rotations = 2;
   bool perturb = true;  // delta in 1e-16, 1e-14, ..., 1e-2, both directions: 16 cases
 };
+
+// Every coordinate times 2^k, or nullopt when one overflows, reaches the subnormals or rounds.
+std::optional<TrianglePair> scaled_exactly(TrianglePair pair, int k);
+// Every vertex plus `offset`, or nullopt when a sum rounds (TwoSum).
+std::optional<TrianglePair> translated_exactly(TrianglePair pair, const Vec3<double>& offset);
 
 // All 6 vertex orders of T1 × all 6 of T2 × both argument orders; the identity first.
 void add_symmetry_variants(const Case& base, int count, Rng& rng, std::vector<Case>& out);

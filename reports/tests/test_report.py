@@ -360,6 +360,44 @@ class ReportFromFixture(unittest.TestCase):
         self.assertEqual(values["bench seed"], self.bench["context"]["seed"])
 
 
+    # ---- the hunt and the mutants (hunt.json, mutants.json) ----
+    def test_hunt_table_matches_the_hunt_json(self):
+        hunt = load("hunt.json")
+        (header, rows), = tables_in(self.text, "1.8 What the hunt finds")[:1]
+        self.assertEqual(header[:5], ["algorithm", "pairs", "pairs/s", "failures", "groups"])
+        self.assertEqual([r[0] for r in rows], [a["name"] for a in hunt["algorithms"]])
+        for r, a in zip(rows, hunt["algorithms"]):
+            self.assertEqual(int(r[1]), a["pairs"])
+            self.assertEqual(int(r[3]), a["failures"])
+            self.assertEqual(int(r[4]), len(a["groups"]))
+            small = sum(1 for g in a["groups"] if g["witness"]["small"])
+            self.assertEqual(r[7], "%d/%d" % (small, len(a["groups"])))
+
+    def test_hunt_shows_each_algorithms_largest_group_paste_ready(self):
+        text = section(self.text, "1.8 What the hunt finds")
+        for a in load("hunt.json")["algorithms"]:
+            if a["groups"]:
+                largest = max(a["groups"], key=lambda g: g["count"])
+                self.assertIn(largest["line"] + "\n", text)
+                self.assertTrue(largest["line"].startswith("hunt.%s." % a["name"]))
+                self.assertIn("expect=" + largest["oracle"], largest["line"])
+
+    def test_mutation_table_matches_the_summary(self):
+        mutants = load("mutants.json")
+        header, rows = tables_in(self.text, "1.8 What the hunt finds")[1]
+        self.assertEqual(header[:2], ["port", "mutants"])
+        self.assertEqual(len(header), 2 + len(mutants["sets"]))
+        for r in rows:
+            s = mutants["summary"][r[0]]
+            built = [m for m in mutants["mutants"] if m["port"] == r[0] and m["compiled"]]
+            self.assertEqual(int(r[1]), len(built))
+            for k, cell in zip(mutants["sets"], r[2:]):
+                caught = sum(1 for m in built if m["caught"].get(k))
+                self.assertEqual(cell, markdown.pct(caught / len(built), 0))
+        for name in mutants["uncaught"]:
+            self.assertIn("`%s`" % name, section(self.text, "1.8 What the hunt finds"))
+
+
 class MissingInputs(unittest.TestCase):
     def test_an_empty_results_directory_gives_a_report_that_says_so(self):
         src = tempfile.mkdtemp()

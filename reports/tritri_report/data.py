@@ -28,6 +28,8 @@ FILES = {
     "bench": "bench.json",
     "compiler_diff": "compiler-diff.json",
     "compiler_bench": "compiler-bench.json",
+    "hunt": "hunt.json",
+    "mutants": "mutants.json",
 }
 # The named suites' checks (check-yuhe13.json, ...) are named by the papers' published files.
 

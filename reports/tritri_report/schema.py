@@ -34,6 +34,14 @@ KINDS = {
     "diff": ("schema", {"tritri-diff/1"}, [
         "case_count", "inputs", "pairs[].a", "pairs[].b", "pairs[].differ", "pairs[].overlap_differ",
         "pairs[].fate_differ", "pairs[].families[].family", "pairs[].families[].differ", "pairs[].examples"]),
+    # `tritri hunt` (harness/hunt/output.cpp) and scripts/mutants.
+    "hunt": ("schema", {"tritri-hunt/1"}, [
+        "seed", "budget", "algorithms[].name", "algorithms[].pairs", "algorithms[].pairs_per_second",
+        "algorithms[].failures", "algorithms[].first_failure_seconds", "algorithms[].groups[].signature",
+        "algorithms[].groups[].count", "algorithms[].groups[].line", "algorithms[].groups[].witness.small"]),
+    "mutants": ("schema", {"tritri-mutants/1"}, [
+        "sets", "summary", "mutants[].name", "mutants[].port", "mutants[].operator", "mutants[].line",
+        "mutants[].caught", "uncaught"]),
     "manifest": ("schema", {"tritri-corpus-manifest/2"}, ["seed", "files", "sha256"]),
     "provenance": ("schema", {"tritri-provenance/1"}, ["machine_name", "git_sha", "git_dirty", "command"]),
     "steps": ("schema", {"tritri-steps/1"}, ["steps[].name", "steps[].seconds", "steps[].status"]),

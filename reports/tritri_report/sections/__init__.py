@@ -11,7 +11,7 @@ The report writes each heading, then calls render.
 """
 
 from . import (asymmetry, authors, baseline, compiler, correctness, exact_test, float_double, gallery, header,
-               moller97, papers, provenance, sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06,
+               hunt, moller97, papers, provenance, sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06,
                unquoted, yuhe13)
 
 SECTIONS = [
@@ -21,6 +21,7 @@ SECTIONS = [
     asymmetry,
     scorecard,
     baseline,
+    hunt,
     speed_error,
     time_ratio,
     exact_test,
