@@ -21,7 +21,8 @@
   X(bench, "time every algorithm by intersection ratio, type, family and stage (Google Benchmark)")           \
   X(scene, "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files")                \
   X(compare, "what changed between two check or bench results (with a U test for times)")                    \
-  X(diff, "where two algorithms answer differently (e.g. a port and its authors' code)")
+  X(diff, "where two algorithms answer differently (e.g. a port and its authors' code)")                    \
+  X(merge, "join the shards of a campaign (check --shard K/N) into the result of one run")
 
 namespace tritri::cli {
 
