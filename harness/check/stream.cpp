@@ -9,12 +9,14 @@ namespace {
 
 constexpr const char* kNotRun = "not run: the run stopped at the fault limit (--max-faults)";
 
-// One algorithm's run across chunks: what is left of its fault limit, and its account so far.
-struct RunState {
-  std::size_t faults_left = 0;  // with a limit: faults it may still have before its run stops
-  bool stopped = false;
-  StoppedRun account;
-};
+}  // namespace
+
+RunState start_run(const Algorithm& algorithm, const IsolationOptions& isolation) {
+  RunState run;
+  run.faults_left = isolation.max_faults;
+  run.account.algorithm = algorithm.name;
+  return run;
+}
 
 std::vector<Answers> answer_chunk(const Algorithm& algorithm, const std::vector<Case>& chunk,
                                   const IsolationOptions& isolation, RunState& state) {
@@ -43,19 +45,14 @@ std::vector<Answers> answer_chunk(const Algorithm& algorithm, const std::vector<
   return answers;
 }
 
-}  // namespace
-
 CheckResult check_files(const std::vector<const Algorithm*>& algorithms, const std::vector<std::string>& files,
                         const StreamOptions& options) {
   CheckResult result;
   result.algorithms = algorithms;
   result.groupings = options.groupings;
   result.judge = options.judge.kind;
-  std::vector<RunState> runs(algorithms.size());
-  for (std::size_t k = 0; k < algorithms.size(); ++k) {
-    runs[k].faults_left = options.isolation.max_faults;
-    runs[k].account.algorithm = algorithms[k]->name;
-  }
+  std::vector<RunState> runs;
+  for (const Algorithm* a : algorithms) runs.push_back(start_run(*a, options.isolation));
   // Failures are gathered per algorithm and joined at the end, in run_check's order.
   std::vector<std::vector<Failure>> failures(algorithms.size());
   CaseStream stream(files, options.range);

@@ -83,28 +83,11 @@ void print_per_algorithm(const CheckResult& result, const BaselineComparison& co
   }
 }
 
-// --shard K/N: which part of the input this run checks (cases/case_stream.hpp, shard_range).
-std::optional<ShardInfo> shard_of(const Args& args) {
-  const auto spec = args.value("--shard");
-  if (!spec) return std::nullopt;
-  ShardInfo shard;
-  const auto slash = spec->find('/');
-  try {
-    if (slash == std::string::npos) throw std::invalid_argument("no '/'");
-    std::size_t used = 0, used2 = 0;
-    shard.index = std::stoull(spec->substr(0, slash), &used);
-    shard.count = std::stoull(spec->substr(slash + 1), &used2);
-    if (used != slash || used2 != spec->size() - slash - 1 || (*spec)[0] == '-') throw std::invalid_argument("junk");
-  } catch (const std::exception&) {
-    throw UsageError("--shard: expected K/N with 0 <= K < N (e.g. 0/4), got '" + *spec + "'");
-  }
-  if (shard.count == 0 || shard.index >= shard.count)
-    throw UsageError("--shard " + *spec + ": K must be below N and N at least 1 (shards are numbered 0 to N-1)");
-  shard.total = count_cases(args.positional());
-  const CaseRange range = shard_range(shard.index, shard.count, shard.total);
-  shard.first = range.first;
-  shard.end = range.end;
-  return shard;
+// --shard K/N, as the JSON records it.
+std::optional<ShardInfo> shard_info(const Args& args) {
+  const auto shard = shard_option(args);
+  if (!shard) return std::nullopt;
+  return ShardInfo{shard->index, shard->count, shard->range.first, shard->range.end, shard->total};
 }
 
 // The JSON and the baseline the command line asks for, each written atomically.
@@ -227,8 +210,8 @@ constexpr const char* kUsageText =
     "                       error (exit 3). oracle: the oracle judges every case\n"
     "  --shard K/N          check only part K of N of the input (0 <= K < N; contiguous ranges\n"
     "                       of the cases in file order); 'tritri merge' joins the N JSON results\n"
-    "                       into the one a single run writes. With --scorecard, shard 0 computes\n"
-    "                       the scorecards (over the whole input's bases)\n"
+    "                       into the one a single run writes (scripts/cluster/). With --scorecard,\n"
+    "                       shard 0 computes the scorecards (over the whole input's bases)\n"
     "  --cross-check        the second judge: check only the 'exact' algorithm (exact by\n"
     "                       construction, written independently of the oracle) at both\n"
     "                       levels; any disagreement is a bug in the oracle or in it: all are\n"
@@ -301,7 +284,7 @@ int cmd_check(int argc, char** argv) {
     for (auto& row : read_baseline(file)) recorded.insert(row);
   if (args.positional().empty()) throw UsageError("no case file given (the built-in cases are cases/builtin.cases)");
   CheckJsonContext context;
-  context.shard = shard_of(args);
+  context.shard = shard_info(args);
   context.judge = judge_options(args, algorithms, cross_check);
   StreamOptions options{.groupings = groupings_of(args.values("--group-by")),
                         .isolation = isolation_options(args),

@@ -61,6 +61,7 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
 #include "harness/check/check.hpp"
 #include "harness/run/isolation.hpp"
 
+#include <optional>
 #include <set>
 
 namespace tritri::cli {
@@ -82,5 +83,15 @@ std::string vec_text(const Vec3<double>& v);
 // its first faulting cases and how many were not run, and true (the command then exits 1).
 bool report_stopped(std::ostream& out, const Algorithm& algorithm, const std::vector<Case>& cases,
                     const std::vector<Answers>& answers);
+
+// --shard K/N (check, label, answer): part K of N of the input, cases [first, end) of total
+// (cases/case_stream.hpp, shard_range); counts the cases of the files to find its range.
+struct Shard {
+  std::size_t index = 0, count = 1;
+  CaseRange range;
+  std::size_t total = 0;
+};
+extern const char* const kShardHelp;
+std::optional<Shard> shard_option(const Args& args);
 
 }  // namespace tritri::cli
