@@ -49,17 +49,14 @@ void score_segment(const SegmentAnswer& s, const TrianglePair& pair, const Oracl
   const Vec3<double>& q = s.kind == SegmentKind::point ? s.p : s.q;
   const Vec3<double>& b = truth.points[truth.point_count == 2 ? 1 : 0];
   const double scale = pair_size(pair);
-  tally.errors.push_back(hausdorff_distance(s.p, q, truth.points[0], b) / (scale > 0 ? scale : 1.0));
+  tally.errors.add(hausdorff_distance(s.p, q, truth.points[0], b) / (scale > 0 ? scale : 1.0));
 }
 
 }  // namespace
 
-double SegmentTally::median_error() const { return median(errors); }
+double SegmentTally::median_error() const { return errors.median(); }
 
-double SegmentTally::max_error() const {
-  if (errors.empty()) return std::numeric_limits<double>::quiet_NaN();
-  return *std::max_element(errors.begin(), errors.end());
-}
+double SegmentTally::max_error() const { return errors.max(); }
 
 // Between two convex sets the distance to the other is convex along a segment, so the
 // Hausdorff distance between segments is attained at an endpoint.
@@ -133,7 +130,7 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
     return tally;
   }
   auto fail = [&](Level level, std::string answer, std::string expected) {
-    failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected), ""});
+    failures.push_back({algorithm.name, i, level, std::move(answer), std::move(expected), "", nullptr, {}});
   };
   if (a.fate == Fate::not_run) {
     ++tally.not_run;
@@ -141,7 +138,8 @@ Tally score_case(const Algorithm& algorithm, std::size_t i, const Case& c, const
   }
   if (a.fate != Fate::ok) {
     ++(a.fate == Fate::crash ? tally.crashes : tally.timeouts);
-    failures.push_back({algorithm.name, i, Level::overlap, to_string(a.fate), overlap_word(truth.overlap), a.fault});
+    failures.push_back(
+        {algorithm.name, i, Level::overlap, to_string(a.fate), overlap_word(truth.overlap), a.fault, nullptr, {}});
     return tally;
   }
 
@@ -189,7 +187,7 @@ void add_tally(SegmentTally& into, const SegmentTally& t) {
   into.answered += t.answered;
   into.kind_mismatches += t.kind_mismatches;
   into.not_computed += t.not_computed;
-  into.errors.insert(into.errors.end(), t.errors.begin(), t.errors.end());
+  into.errors.add(t.errors);
 }
 
 void add_tally(Tally& into, const Tally& t) {
@@ -224,10 +222,17 @@ void print_stopped(std::ostream& out, const StoppedRun& run) {
 
 void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
-           CheckResult& result) {
-  if (auto stopped = stopped_run(algorithm, cases, answers)) result.stopped.push_back(*stopped);
+           CheckResult& result, std::size_t first_index) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    const Tally one = score_case(algorithm, i, cases[i], oracle[i], answers[i], result.failures);
+    const std::size_t before = result.failures.size();
+    const Tally one = score_case(algorithm, first_index + i, cases[i], oracle[i], answers[i], result.failures);
+    if (result.failures.size() > before) {
+      const auto subject = std::make_shared<const Case>(cases[i]);
+      for (std::size_t k = before; k < result.failures.size(); ++k) {
+        result.failures[k].subject = subject;
+        result.failures[k].oracle_relation = oracle[i].relation;
+      }
+    }
     for (const std::string& group : groups_of(cases[i], result.groupings)) {
       const auto [tally, first] = result.tallies.try_emplace({algorithm.name, group});
       if (first) note_group(result, group);
@@ -242,10 +247,18 @@ CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std
   CheckResult result;
   result.algorithms = algorithms;
   result.groupings = groupings;
-  for (const auto& c : cases)
+  result.case_count = cases.size();
+  result.judged.oracle = cases.size();
+  for (const auto& c : cases) {
+    result.names.add(c.name);
     for (const std::string& group : groups_of(c, groupings)) note_group(result, group);
-  for (const Algorithm* algorithm : algorithms)
-    score(*algorithm, cases, oracle, answer_cases(*algorithm, cases, isolation), result);
+  }
+  result.names.seal();
+  for (const Algorithm* algorithm : algorithms) {
+    const auto answers = answer_cases(*algorithm, cases, isolation);
+    if (auto stopped = stopped_run(*algorithm, cases, answers)) result.stopped.push_back(*stopped);
+    score(*algorithm, cases, oracle, answers, result);
+  }
   return result;
 }
 

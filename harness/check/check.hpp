@@ -3,14 +3,18 @@
 
 #include "cases/casefile.hpp"
 #include "cases/label.hpp"
+#include "harness/check/error_summary.hpp"
 #include "harness/check/grouping.hpp"
 #include "harness/run/isolation.hpp"
+#include "cases/case_stream.hpp"
+#include "cases/oracle/judge.hpp"
 #include "cases/oracle/oracle.hpp"
 #include "tritri/algorithm.hpp"
 
 #include <iosfwd>
 #include <optional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,14 +41,17 @@ std::vector<Answers> answer_cases(const Algorithm& algorithm, const std::vector<
 // else what the segment implies (the judge's rules, harness/check/judge.hpp).
 Overlap overlap_of(const Algorithm& algorithm, const Answers& answers);
 
-// A disagreement with the oracle. `answer` and `expected` are the vocabulary's words.
+// A disagreement with the oracle. `answer` and `expected` are the vocabulary's words. A failure
+// carries its case, so results need no list of every case (a streamed check keeps none).
 struct Failure {
   std::string algorithm;
-  std::size_t case_index = 0;
+  std::size_t case_index = 0;  // the case's place in the whole input (the files in order)
   Level level = Level::overlap;
   std::string answer;
   std::string expected;
   std::string detail;  // for a crash or timeout: what happened
+  std::shared_ptr<const Case> subject;  // the case; shared by the failures of one case
+  Relation oracle_relation = Relation::disjoint;
 };
 
 // The segment level against the exact intersection, for algorithms that answer it.
@@ -54,7 +61,7 @@ struct SegmentTally {
   std::size_t not_computed = 0;    // answered `coplanar`: contact found, no intersection given
   // Where both the answer and the exact intersection are a point or a segment: the Hausdorff
   // distance between them divided by the pair's bounding-box diagonal.
-  std::vector<double> errors;
+  ErrorSummary errors;
 
   double median_error() const;  // NaN when nothing was measured
   double max_error() const;
@@ -109,13 +116,18 @@ struct CheckResult {
   std::map<std::pair<std::string, std::string>, Tally> tallies;  // (algorithm, group)
   std::vector<Failure> failures;
   std::vector<StoppedRun> stopped;  // the runs stopped at the fault limit: the check is incomplete
+  std::size_t case_count = 0;       // the cases checked
+  JudgeKind judge = JudgeKind::oracle;
+  JudgeCounts judged;               // which judge decided how many of them (cases/oracle/judge.hpp)
+  CaseNames names;                  // the cases' names (sealed): which baseline rows are in this run
 };
 
 // Scores one algorithm's answers against the oracle and adds them to `result`, each case to the
 // tally of each of its groups (`result.groupings`).
+// `first_index` is the place of cases[0] in the whole input, when `cases` is a chunk of it.
 void score(const Algorithm& algorithm, const std::vector<Case>& cases,
            const std::vector<OracleRecord>& oracle, const std::vector<Answers>& answers,
-           CheckResult& result);
+           CheckResult& result, std::size_t first_index = 0);
 
 CheckResult run_check(const std::vector<const Algorithm*>& algorithms, const std::vector<Case>& cases,
                       const std::vector<OracleRecord>& oracle, const IsolationOptions& isolation = {},

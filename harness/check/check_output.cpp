@@ -11,40 +11,13 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <ostream>
 #include <sstream>
 
 namespace tritri {
 namespace {
 
-
-nlohmann::json algorithm_json(const Algorithm& a) {
-  nlohmann::json levels = nlohmann::json::array();
-  for (Level l : {Level::overlap, Level::relation, Level::segment})
-    if (a.answers(l)) levels.push_back(std::string(to_string(l)));
-  nlohmann::json tolerance = nullptr;
-  if (!a.tolerance.none())
-    tolerance = {{"value", a.tolerance.value},
-                 {"quantity", a.tolerance.quantity},
-                 {"relative", a.tolerance.relative}};
-  return {{"name", a.name},
-          {"citation", a.citation},
-          {"summary", a.summary},
-          {"levels", levels},
-          {"boundary", a.boundary == Boundary::closed ? "closed" : "open"},
-          {"tolerance", tolerance},
-          {"accepts_degenerate", a.accepts_degenerate},
-          {"folder", a.folder}};
-}
-
-// The groupings as they were given on the command line: "subsuite=symmetry,@base".
-std::string grouping_text(const Grouping& g) {
-  std::string text;
-  for (const auto& [key, value] : g.keys) text += (text.empty() ? "" : ",") + key + (value ? "=" + *value : "");
-  return text;
-}
-
-nlohmann::json number_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
 
 std::string short_number(double x) {
   if (std::isnan(x)) return "-";
@@ -120,12 +93,12 @@ void print_segment_errors(std::ostream& out, const CheckResult& result) {
       if (it == result.tallies.end()) continue;
       const SegmentTally& s = it->second.segment;
       add_tally(total, s);
-      row(a->name, group, std::to_string(s.answered), std::to_string(s.errors.size()),
+      row(a->name, group, std::to_string(s.answered), std::to_string(s.errors.count()),
           short_number(s.median_error()), short_number(s.max_error()), std::to_string(s.kind_mismatches),
           std::to_string(s.not_computed));
     }
     if (result.groups.size() > 1)
-      row(a->name, "(all)", std::to_string(total.answered), std::to_string(total.errors.size()),
+      row(a->name, "(all)", std::to_string(total.answered), std::to_string(total.errors.count()),
           short_number(total.median_error()), short_number(total.max_error()),
           std::to_string(total.kind_mismatches), std::to_string(total.not_computed));
   }
@@ -168,8 +141,7 @@ bool report_incomplete(std::ostream& out, const CheckResult& result) {
   return !is_complete(result);
 }
 
-void print_failures(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
-                    std::size_t limit) {
+void print_failures(std::ostream& out, const CheckResult& result, std::size_t limit) {
   std::size_t shown = 0;
   for (const Failure& f : result.failures) {
     if (shown == limit) {
@@ -177,7 +149,7 @@ void print_failures(std::ostream& out, const CheckResult& result, const std::vec
           << " more disagreements (raise --max-failures, or see --json)\n";
       break;
     }
-    const Case& c = cases[f.case_index];
+    const Case& c = *f.subject;
     if (f.detail.empty())
       out << "# " << f.algorithm << ' ' << to_string(f.level) << ": answered " << f.answer << ", oracle "
           << f.expected << "   (" << c.source << ':' << c.line << ")\n";
@@ -197,70 +169,18 @@ nlohmann::json corpus_json(const CorpusIdentity& corpus) {
   return {{"hash", corpus.hash}, {"generated_by", corpus.generated_by}, {"files", files}};
 }
 
-void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs,
-                      const std::vector<Scorecard>& scorecards, const CorpusIdentity& corpus) {
-  nlohmann::json doc;
-  doc["schema"] = "tritri-check/2";
-  doc["oracle"] = oracle_description();
-  doc["inputs"] = inputs;
-  doc["corpus"] = corpus_json(corpus);
-  doc["case_count"] = cases.size();
-  doc["complete"] = is_complete(result);  // false: an algorithm stopped at the fault limit
-  doc["algorithms"] = nlohmann::json::array();
-  for (const Algorithm* a : result.algorithms) doc["algorithms"].push_back(algorithm_json(*a));
-  doc["group_by"] = nlohmann::json::array();
-  for (const Grouping& g : result.groupings) doc["group_by"].push_back(grouping_text(g));
-  doc["families"] = result.groups;  // the key of tritri-check/1; "group_by" says what the names are
-  doc["tallies"] = nlohmann::json::array();
-  for (const Algorithm* a : result.algorithms)
-    for (const auto& group : result.groups) {
-      auto it = result.tallies.find({a->name, group});
-      if (it == result.tallies.end()) continue;
-      const Tally& t = it->second;
-      nlohmann::json confusion = nullptr;
-      if (a->answers(Level::relation)) {
-        confusion = nlohmann::json::array();
-        for (const auto& [key, count] : t.confusion)
-          confusion.push_back({{"answer", key.first}, {"oracle", key.second}, {"count", count}});
-      }
-      nlohmann::json segment = nullptr;
-      if (a->answers(Level::segment))
-        segment = {{"answered", t.segment.answered},
-                   {"measured", t.segment.errors.size()},
-                   {"median_error", number_or_null(t.segment.median_error())},
-                   {"max_error", number_or_null(t.segment.max_error())},
-                   {"kind_mismatches", t.segment.kind_mismatches},
-                   {"not_computed", t.segment.not_computed}};
-      doc["tallies"].push_back({{"algorithm", a->name},
-                                {"family", group},
-                                {"cases", t.cases},
-                                {"false_positives", t.false_positives},
-                                {"false_negatives", t.false_negatives},
-                                {"misclassified", a->answers(Level::relation) ? nlohmann::json(t.misclassified) : nullptr},
-                                {"unsupported", t.unsupported},
-                                {"crashes", t.crashes},
-                                {"timeouts", t.timeouts},
-                                {"not_run", t.not_run},
-                                {"confusion", confusion},
-                                {"segment", segment}});
-    }
-  doc["failures"] = nlohmann::json::array();
-  for (const Failure& f : result.failures) {
-    const Case& c = cases[f.case_index];
-    doc["failures"].push_back({{"algorithm", f.algorithm},
-                               {"case", c.name},
-                               {"family", c.family()},
-                               {"groups", groups_of(c, result.groupings)},
-                               {"level", std::string(to_string(f.level))},
-                               {"answer", f.answer},
-                               {"oracle", f.expected},
-                               {"detail", f.detail},
-                               {"oracle_relation", std::string(to_string(oracle[f.case_index].relation))},
-                               {"line", format_case(c)}});
-  }
-  if (!scorecards.empty()) doc["scorecards"] = scorecards_json(scorecards);
-  out << doc.dump(1) << '\n';
+void write_check_json(std::ostream& out, const CheckResult& result, const CheckJsonContext& context) {
+  dump_check_json(out, check_json(result, context));
+}
+
+void dump_check_json(std::ostream& out, const nlohmann::json& doc) { out << doc.dump(1) << '\n'; }
+
+std::vector<Failure> capped_failures(const std::vector<Failure>& failures, std::size_t cap) {
+  std::vector<Failure> kept;
+  std::map<std::tuple<std::string, std::string, Level>, std::size_t> seen;
+  for (const Failure& f : failures)
+    if (seen[{f.algorithm, f.subject->family(), f.level}]++ < cap) kept.push_back(f);
+  return kept;
 }
 
 Baseline read_baseline(const std::string& path) {
@@ -283,11 +203,10 @@ Baseline read_baseline(const std::string& path) {
   return rows;
 }
 
-Baseline baseline_of(const CheckResult& result, const std::vector<Case>& cases) {
+Baseline baseline_of(const CheckResult& result) {
   Baseline rows;
   for (const Failure& f : result.failures)
-    rows.insert({f.algorithm, cases[f.case_index].name, std::string(to_string(f.level)), f.answer,
-                 f.expected});
+    rows.insert({f.algorithm, f.subject->name, std::string(to_string(f.level)), f.answer, f.expected});
   return rows;
 }
 
@@ -299,17 +218,15 @@ void write_baseline(std::ostream& out, const Baseline& baseline) {
     out << a << '\t' << c << '\t' << l << '\t' << ans << '\t' << exp << '\n';
 }
 
-BaselineComparison compare_with_baseline(const Baseline& recorded, const CheckResult& result,
-                                         const std::vector<Case>& cases) {
-  std::set<std::string> algorithms, case_names;
+BaselineComparison compare_with_baseline(const Baseline& recorded, const CheckResult& result) {
+  std::set<std::string> algorithms;
   for (const Algorithm* a : result.algorithms) algorithms.insert(a->name);
-  for (const Case& c : cases) case_names.insert(c.name);
-  const Baseline current = baseline_of(result, cases);
+  const Baseline current = baseline_of(result);
   BaselineComparison comparison;
   for (const auto& row : current)
     if (!recorded.count(row)) comparison.new_failures.push_back(row);
   for (const auto& row : recorded)
-    if (algorithms.count(std::get<0>(row)) && case_names.count(std::get<1>(row)) && !current.count(row))
+    if (algorithms.count(std::get<0>(row)) && result.names.contains(std::get<1>(row)) && !current.count(row))
       comparison.fixed.push_back(row);
   return comparison;
 }

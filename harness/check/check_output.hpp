@@ -8,6 +8,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <iosfwd>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -35,17 +36,38 @@ void print_segment_errors(std::ostream& out, const CheckResult& result);
 
 // Up to `limit` failures, each as a comment line and the case in two paste-ready forms
 // (%.17g and hex float), so it can go straight into a regression case file.
-void print_failures(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
-                    std::size_t limit);
+void print_failures(std::ostream& out, const CheckResult& result, std::size_t limit);
 
-// The JSON document described in harness/README.md (schema "tritri-check/2"). With groupings,
+// Which part of a campaign a result is (`tritri check --shard K/N`): cases [first, end) of total.
+struct ShardInfo {
+  std::size_t index = 0, count = 1;
+  std::size_t first = 0, end = 0, total = 0;
+};
+
+// What the JSON says beside the result: the inputs as given and their identity
+// (cases/corpus_identity.hpp, as tritri bench records it too), the scorecards (scorecard.hpp),
+// the shard, and the cap on failures per algorithm x family x level (--json-max-failures).
+struct CheckJsonContext {
+  std::vector<std::string> inputs;
+  CorpusIdentity corpus;
+  std::vector<Scorecard> scorecards;
+  std::optional<ShardInfo> shard;
+  std::optional<std::size_t> failure_cap;
+  JudgeOptions judge;
+};
+
+// The JSON document described in harness/README.md (schema kCheckSchema). With groupings,
 // "families" and each tally's "family" name groups (grouping.hpp), and "group_by" lists them.
-// With scorecards (tritri check --scorecard), "scorecards" holds them (scorecard.hpp).
-// "corpus" is the identity of the input files (cases/corpus_identity.hpp), as tritri bench
-// records it too.
-void write_check_json(std::ostream& out, const CheckResult& result, const std::vector<Case>& cases,
-                      const std::vector<OracleRecord>& oracle, const std::vector<std::string>& inputs,
-                      const std::vector<Scorecard>& scorecards = {}, const CorpusIdentity& corpus = {});
+inline constexpr const char* kCheckSchema = "tritri-check/3";
+nlohmann::json check_json(const CheckResult& result, const CheckJsonContext& context);
+void write_check_json(std::ostream& out, const CheckResult& result, const CheckJsonContext& context);
+// The one way a check document is written, so that `tritri merge` writes the same bytes.
+void dump_check_json(std::ostream& out, const nlohmann::json& doc);
+// A tally's "segment" object: counts, median and maximum error, and the errors' summary.
+nlohmann::json segment_json(const SegmentTally& segment);
+
+// The first `cap` failures of each algorithm x family x level, in order (--json-max-failures).
+std::vector<Failure> capped_failures(const std::vector<Failure>& failures, std::size_t cap);
 
 // The JSON form of a corpus identity, the same in check's and bench's documents.
 nlohmann::json corpus_json(const CorpusIdentity& corpus);
@@ -56,7 +78,7 @@ using BaselineRow = std::tuple<std::string, std::string, std::string, std::strin
 using Baseline = std::set<BaselineRow>;
 
 Baseline read_baseline(const std::string& path);  // throws CaseFileError-style messages
-Baseline baseline_of(const CheckResult& result, const std::vector<Case>& cases);
+Baseline baseline_of(const CheckResult& result);
 void write_baseline(std::ostream& out, const Baseline& baseline);
 
 struct BaselineComparison {
@@ -64,9 +86,8 @@ struct BaselineComparison {
   std::vector<BaselineRow> fixed;         // in the baseline, not in this run
 };
 
-// Only rows of algorithms and cases that are part of this run take part: a baseline may cover
-// more algorithms and case files than one run checks.
-BaselineComparison compare_with_baseline(const Baseline& recorded, const CheckResult& result,
-                                         const std::vector<Case>& cases);
+// Only rows of algorithms and cases that are part of this run (result.names) take part: a
+// baseline may cover more algorithms and case files than one run checks.
+BaselineComparison compare_with_baseline(const Baseline& recorded, const CheckResult& result);
 
 }  // namespace tritri

@@ -37,7 +37,8 @@ enum class Kind { check, bench };
 // Plain Google Benchmark JSON (no tritri section) has no version of its own and is read as is.
 // Both are documented with their keys: harness/README.md and harness/bench/README.md.
 // A bench file of version 1 timed every benchmark in batch mode, under a name without the mode.
-constexpr const char* kCheckSchema = "tritri-check/2";
+// Version 3 (tritri merge) added keys only: the tallies compare reads are version 2's.
+constexpr const char* kCheckSchemas[] = {"tritri-check/2", "tritri-check/3"};
 constexpr const char* kBenchSchemas[] = {"tritri-bench/1", "tritri-bench/2"};
 
 // object[key], or an error naming the file and the key's path (`where` is the path up to it).
@@ -61,7 +62,7 @@ void expect_schema(const Json& schema, const char* const (&understood)[N], const
 Kind kind_of(const Json& doc, const std::string& path) {
   if (doc.is_object() && doc.contains("schema") && doc["schema"].is_string() &&
       doc["schema"].get<std::string>().rfind("tritri-check/", 0) == 0) {
-    expect_schema(doc["schema"], {kCheckSchema}, "schema", path);
+    expect_schema(doc["schema"], kCheckSchemas, "schema", path);
     return Kind::check;
   }
   if (doc.is_object() && doc.contains("benchmarks") && doc["benchmarks"].is_array()) {

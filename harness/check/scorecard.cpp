@@ -186,12 +186,15 @@ std::string Probe::verdict() const {
   return "mixed";
 }
 
+bool is_scorecard_base(const Case& c) {
+  const auto subsuite = c.label("subsuite");
+  return !subsuite || (*subsuite == "symmetry" && c.label("transform") == "sym-012-012-ab");
+}
+
 std::vector<Case> scorecard_bases(const std::vector<Case>& cases, const ScorecardOptions& options) {
   std::vector<const Case*> candidates;
-  for (const Case& c : cases) {
-    const auto subsuite = c.label("subsuite");
-    if (!subsuite || (*subsuite == "symmetry" && c.label("transform") == "sym-012-012-ab")) candidates.push_back(&c);
-  }
+  for (const Case& c : cases)
+    if (is_scorecard_base(c)) candidates.push_back(&c);
   std::vector<Case> bases;
   const std::size_t n = candidates.size(), take = std::min(n, options.max_bases);
   for (std::size_t k = 0; k < take; ++k) bases.push_back(*candidates[k * n / take]);

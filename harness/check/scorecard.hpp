@@ -55,6 +55,8 @@ struct ScorecardOptions {
 // The bases: input cases that are not variants of another (no subsuite= label, or the identity
 // symmetry), at most options.max_bases of them, evenly spaced.
 std::vector<Case> scorecard_bases(const std::vector<Case>& cases, const ScorecardOptions& options);
+// Whether a case can be a base: no variant (no subsuite= label), or the identity symmetry.
+bool is_scorecard_base(const Case& c);
 
 Scorecard compute_scorecard(const Algorithm& algorithm, const std::vector<Case>& bases,
                             const ScorecardOptions& options, const IsolationOptions& isolation);

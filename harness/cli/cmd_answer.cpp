@@ -1,6 +1,7 @@
 #include "harness/cli/args.hpp"
 #include "harness/check/check.hpp"
 #include "harness/check/judge.hpp"
+#include "harness/check/stream.hpp"
 #include "harness/cli/commands.hpp"
 
 #include <iostream>
@@ -22,10 +23,21 @@ std::string overlap_text(const Algorithm& a, const Answers& ans) {
   return "-";
 }
 
+void print_answer(const Algorithm& algorithm, const Case& c, const Answers& a) {
+  if (a.fate != Fate::ok) {
+    const std::string word = to_string(a.fate);
+    std::cout << c.name << '\t' << word << '\t' << word << '\t' << word << '\n';
+    return;
+  }
+  std::cout << c.name << '\t' << overlap_text(algorithm, a) << '\t' << relation_text(algorithm, a) << '\t'
+            << (!algorithm.answers(Level::segment) ? "-" : a.declined ? "unsupported" : segment_text(a.segment))
+            << '\n';
+}
+
 }  // namespace
 
 int cmd_answer(int argc, char** argv) {
-  Args args(argc, argv, merged({.lists = {"--algo"}}, kRunOptions));
+  Args args(argc, argv, merged({.valued = {"--shard"}, .lists = {"--algo"}}, kRunOptions));
   if (args.help()) {
     std::cout << "usage: tritri answer --algo NAME [--plugin LIB | --exec COMMAND] FILE...\n\n"
                  "One algorithm's answers for every case, as TSV with a header line:\n"
@@ -38,8 +50,9 @@ int cmd_answer(int argc, char** argv) {
                  "'-' marks a level the algorithm does not answer. A degenerate case that the\n"
                  "algorithm does not accept is answered 'unsupported' without calling it. A case on\n"
                  "which the algorithm crashed or hung is answered 'crash' or 'timeout' in every column,\n"
-                 "and one it did not reach after --max-faults faults 'not-run' (exit status 1).\n\n"
-              << kRunOptionsHelp << '\n' << kListsHelp;
+                 "and one it did not reach after --max-faults faults 'not-run' (exit status 1).\n"
+                 "The cases are read and answered a chunk at a time (memory does not grow with them).\n\n"
+              << kShardHelp << kRunOptionsHelp << '\n' << kListsHelp;
     return kOk;
   }
   load_external_algorithms(args);
@@ -48,22 +61,20 @@ int cmd_answer(int argc, char** argv) {
   const auto chosen = select_algorithms(names);
   if (chosen.size() != 1) throw UsageError("answer needs exactly one algorithm");
   const Algorithm& algorithm = *chosen.front();
-  const auto cases = load_cases(args.positional());
-  const auto answers = answer_cases(algorithm, cases, isolation_options(args));
-  std::cout << "name\toverlap\trelation\tsegment\n";
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    const Answers& a = answers[i];
-    if (a.fate != Fate::ok) {
-      const std::string word = to_string(a.fate);
-      std::cout << cases[i].name << '\t' << word << '\t' << word << '\t' << word << '\n';
-      continue;
-    }
-    std::cout << cases[i].name << '\t'
-              << overlap_text(algorithm, a) << '\t' << relation_text(algorithm, a) << '\t'
-              << (!algorithm.answers(Level::segment) ? "-" : a.declined ? "unsupported" : segment_text(a.segment))
-              << '\n';
+  if (args.positional().empty()) throw UsageError("no case file given (the built-in cases are cases/builtin.cases)");
+  const auto shard = shard_option(args);
+  CaseStream stream(args.positional(), shard ? shard->range : CaseRange{});
+  const IsolationOptions isolation = isolation_options(args);
+  RunState run = start_run(algorithm, isolation);
+  std::vector<Case> cases;
+  if (!shard || shard->index == 0) std::cout << "name\toverlap\trelation\tsegment\n";
+  while (stream.next(cases, 1 << 15)) {
+    const auto answers = answer_chunk(algorithm, cases, isolation, run);
+    for (std::size_t i = 0; i < cases.size(); ++i) print_answer(algorithm, cases[i], answers[i]);
   }
-  return report_stopped(std::cerr, algorithm, cases, answers) ? kFindings : kOk;
+  if (!run.account.not_run) return kOk;
+  print_stopped(std::cerr, run.account);
+  return kFindings;
 }
 
 }  // namespace tritri::cli

@@ -3,9 +3,11 @@
 #include "harness/check/check.hpp"
 #include "harness/check/check_output.hpp"
 #include "harness/check/baseline_file.hpp"
+#include "harness/check/stream.hpp"
 #include "harness/cli/commands.hpp"
 #include "cases/util/atomic_file.hpp"
 
+#include <algorithm>
 #include <deque>
 #include <iostream>
 #include <map>
@@ -30,18 +32,6 @@ std::vector<const Algorithm*> float_instantiations(const std::vector<const Algor
   if (!skipped.empty()) std::cerr << "tritri check --float: no float instantiation, left out: " << skipped << '\n';
   if (out.empty()) throw UsageError("--float: none of the chosen algorithms has a float instantiation");
   return out;
-}
-
-// --json-max-failures N: the JSON keeps only the first N disagreements of each algorithm ×
-// family × level (the tallies still count every case). On the default corpus the full list runs
-// to hundreds of megabytes, most of it the same case under its 72 symmetry variants.
-CheckResult with_failures_capped(const CheckResult& result, const std::vector<Case>& cases, std::size_t cap) {
-  CheckResult capped = result;
-  capped.failures.clear();
-  std::map<std::tuple<std::string, std::string, Level>, std::size_t> kept;
-  for (const Failure& f : result.failures)
-    if (kept[{f.algorithm, cases[f.case_index].family(), f.level}]++ < cap) capped.failures.push_back(f);
-  return capped;
 }
 
 // --group-by SPEC (repeatable): each a grouping of the cases by their labels (grouping.hpp).
@@ -72,8 +62,7 @@ void print_rows(const char* title, const std::vector<BaselineRow>& rows, std::si
 
 // Per algorithm "new: N, fixed: M", then the first few new disagreements' cases, paste-ready
 // (hex float: exactly the input that was judged), so a regression can go straight into a case file.
-void print_per_algorithm(const CheckResult& result, const BaselineComparison& comparison,
-                         const std::vector<Case>& cases) {
+void print_per_algorithm(const CheckResult& result, const BaselineComparison& comparison) {
   std::map<std::string, std::pair<std::size_t, std::size_t>> counts;
   for (const Algorithm* a : result.algorithms) counts[a->name];
   for (const auto& row : comparison.new_failures) ++counts[std::get<0>(row)].first;
@@ -83,7 +72,7 @@ void print_per_algorithm(const CheckResult& result, const BaselineComparison& co
     std::cout << "  " << name << ": new: " << c.first << ", fixed: " << c.second << '\n';
   if (comparison.new_failures.empty()) return;
   std::map<std::string, const Case*> by_name;
-  for (const Case& c : cases) by_name.emplace(c.name, &c);
+  for (const Failure& f : result.failures) by_name.emplace(f.subject->name, f.subject.get());
   constexpr std::size_t kShown = 5;
   std::cout << "the first new disagreements' cases, paste-ready:\n";
   for (std::size_t i = 0; i < comparison.new_failures.size() && i < kShown; ++i) {
@@ -94,29 +83,36 @@ void print_per_algorithm(const CheckResult& result, const BaselineComparison& co
   }
 }
 
+// --shard K/N, as the JSON records it.
+std::optional<ShardInfo> shard_info(const Args& args) {
+  const auto shard = shard_option(args);
+  if (!shard) return std::nullopt;
+  return ShardInfo{shard->index, shard->count, shard->range.first, shard->range.end, shard->total};
+}
+
 // The JSON and the baseline the command line asks for, each written atomically.
-void write_outputs(const Args& args, const CheckResult& result, const std::vector<Case>& cases,
-                   const std::vector<OracleRecord>& oracle, const std::vector<Scorecard>& scorecards) {
+void write_outputs(const Args& args, const CheckResult& result, CheckJsonContext context) {
   if (auto json = args.value("--json")) {
-    const CorpusIdentity corpus = identify_corpus(args.positional());
-    write_file_atomically(*json, [&](std::ostream& out) {
-      if (args.value("--json-max-failures"))
-        write_check_json(out, with_failures_capped(result, cases, args.count("--json-max-failures", 0)), cases,
-                         oracle, args.positional(), scorecards, corpus);
-      else
-        write_check_json(out, result, cases, oracle, args.positional(), scorecards, corpus);
-    });
+    context.inputs = args.positional();
+    context.corpus = identify_corpus(args.positional());
+    if (args.value("--json-max-failures")) context.failure_cap = args.count("--json-max-failures", 0);
+    write_file_atomically(*json, [&](std::ostream& out) { write_check_json(out, result, context); });
   }
-  if (auto out_path = args.value("--write-baseline"))
-    write_baseline_file(*out_path, baseline_of(result, cases));
+  if (auto out_path = args.value("--write-baseline")) write_baseline_file(*out_path, baseline_of(result));
 }
 
 // --scorecard: one scorecard per algorithm, printed as one line each.
-std::vector<Scorecard> scorecards_of(const Args& args, const std::vector<const Algorithm*>& algorithms,
-                                     const std::vector<Case>& cases) {
+// The bases are drawn from the whole input (read again, keeping only the cases that can be
+// bases), so every shard would draw the same: only shard 0 computes them, and merge keeps its.
+std::vector<Scorecard> scorecards_of(const Args& args, const std::vector<const Algorithm*>& algorithms) {
   ScorecardOptions options;
   options.max_bases = args.count("--scorecard-bases", options.max_bases);
-  const auto bases = scorecard_bases(cases, options);
+  std::vector<Case> candidates, chunk;
+  CaseStream stream(args.positional());
+  while (stream.next(chunk, 1 << 14))
+    for (Case& c : chunk)
+      if (is_scorecard_base(c)) candidates.push_back(std::move(c));
+  const auto bases = scorecard_bases(candidates, options);
   std::vector<Scorecard> cards;
   Progress progress("scorecard", algorithms.size());
   for (const Algorithm* a : algorithms) {
@@ -133,18 +129,18 @@ std::vector<Scorecard> scorecards_of(const Args& args, const std::vector<const A
 // at both levels; any disagreement is a bug in one of them, reported loudly.
 constexpr const char* kCrossCheckAlgorithm = "exact";
 
-int cross_check_verdict(const CheckResult& result, const std::vector<Case>& cases) {
+int cross_check_verdict(const CheckResult& result) {
   std::size_t bad = 0;
   for (const auto& [key, t] : result.tallies)
     bad += t.false_positives + t.false_negatives + t.misclassified + t.unsupported + t.crashes + t.timeouts;
   if (bad == 0) {
-    std::cout << "\ncross-check: the oracle and '" << kCrossCheckAlgorithm << "' agree on all " << cases.size()
+    std::cout << "\ncross-check: the oracle and '" << kCrossCheckAlgorithm << "' agree on all " << result.case_count
               << " cases at both levels\n";
     return kOk;
   }
   std::cout << "\n*** CROSS-CHECK FAILED: the oracle and '" << kCrossCheckAlgorithm << "' disagree " << bad
             << " time(s). Both claim to be exact, so this is a bug in one of them. The cases:\n";
-  print_failures(std::cout, result, cases, result.failures.size());
+  print_failures(std::cout, result, result.failures.size());
   std::cerr << "tritri check --cross-check: " << bad << " disagreement(s) between two exact tests\n";
   return kFindings;
 }
@@ -155,7 +151,7 @@ constexpr const char* kUsageText =
     "                    [--float] [--json-max-failures N] [--group-by GROUPING...]\n"
     "                    [--scorecard] [--scorecard-bases N]\n"
     "                    [--plugin LIB...] [--exec COMMAND]... [--timeout S] [--no-isolation]\n"
-    "                    [--cross-check] FILE...\n\n"
+    "                    [--cross-check] [--judge exact-first|oracle] [--shard K/N] FILE...\n\n"
     "Runs each chosen algorithm (default: all) on every case and compares its answers with\n"
     "the exact oracle. Prints a table per algorithm x family (the case's family= label, else\n"
     "the file name): cases, FP (said they meet, they do not), FN (said they do not, they do),\n"
@@ -207,6 +203,15 @@ constexpr const char* kUsageText =
     "                       where the algorithm does not accept them; float against double\n"
     "  --scorecard-bases N  at most N base cases, evenly spaced (default 400)\n"
 
+    "  --judge J            exact-first (default): the 'exact' algorithm decides overlap and\n"
+    "                       relation, the oracle (CGAL) what it declines, the exact intersection\n"
+    "                       for the segment level, and about one case in 64 (seeded by the\n"
+    "                       case's place in the input) as a cross-check: a disagreement is an\n"
+    "                       error (exit 3). oracle: the oracle judges every case\n"
+    "  --shard K/N          check only part K of N of the input (0 <= K < N; contiguous ranges\n"
+    "                       of the cases in file order); 'tritri merge' joins the N JSON results\n"
+    "                       into the one a single run writes (scripts/cluster/). With --scorecard,\n"
+    "                       shard 0 computes the scorecards (over the whole input's bases)\n"
     "  --cross-check        the second judge: check only the 'exact' algorithm (exact by\n"
     "                       construction, written independently of the oracle) at both\n"
     "                       levels; any disagreement is a bug in the oracle or in it: all are\n"
@@ -219,10 +224,42 @@ constexpr const char* kExitStatus =
 
 }  // namespace
 
+namespace {
+
+// How the cases are judged: exact first unless --judge oracle, and the oracle alone for
+// --cross-check (which checks `exact` itself against it).
+JudgeOptions judge_options(const Args& args, const std::vector<const Algorithm*>& algorithms, bool cross_check) {
+  JudgeOptions judge;
+  try {
+    judge.kind = judge_kind_of(args.value("--judge").value_or("exact-first"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--judge: ") + e.what());
+  }
+  if (cross_check) judge.kind = JudgeKind::oracle;
+  judge.geometry = std::any_of(algorithms.begin(), algorithms.end(),
+                               [](const Algorithm* a) { return a->answers(Level::segment); });
+  return judge;
+}
+
+void print_results(const Args& args, const CheckResult& result) {
+  print_check_table(std::cout, result);
+  print_confusion(std::cout, result, args.flag("--confusion"));
+  print_segment_errors(std::cout, result);
+  if (!args.flag("--quiet") && !result.failures.empty()) {
+    std::cout << '\n';
+    print_failures(std::cout, result, args.count("--max-failures", 20));
+  }
+  std::cout << "judged: " << result.judged.exact << " cases by exact, " << result.judged.oracle
+            << " by the oracle; " << result.judged.cross_checked << " cross-checked by the oracle (--judge "
+            << to_string(result.judge) << ")\n";
+}
+
+}  // namespace
+
 int cmd_check(int argc, char** argv) {
   Args args(argc, argv,
             merged({.valued = {"--json", "--write-baseline", "--max-failures", "--json-max-failures",
-                               "--scorecard-bases"},
+                               "--scorecard-bases", "--judge", "--shard"},
                     .lists = {"--algo", "--baseline"},
                     .word_lists = {"--group-by"},
                     .flags = {"--quiet", "--confusion", "--float", "--scorecard", "--cross-check"}},
@@ -245,32 +282,29 @@ int cmd_check(int argc, char** argv) {
   const auto baseline_files = args.values("--baseline");
   for (const auto& file : baseline_files)
     for (auto& row : read_baseline(file)) recorded.insert(row);
-  const auto groupings = groupings_of(args.values("--group-by"));
+  if (args.positional().empty()) throw UsageError("no case file given (the built-in cases are cases/builtin.cases)");
+  CheckJsonContext context;
+  context.shard = shard_info(args);
+  context.judge = judge_options(args, algorithms, cross_check);
+  StreamOptions options{.groupings = groupings_of(args.values("--group-by")),
+                        .isolation = isolation_options(args),
+                        .judge = context.judge};
+  if (context.shard) options.range = {context.shard->first, context.shard->end};
+  const CheckResult result = check_files(algorithms, args.positional(), options);
 
-  const auto cases = load_cases(args.positional());
-  Progress progress("labelling", cases.size());
-  const auto oracle = label_cases(cases, progress.callback());
-  progress.finish();
-  const CheckResult result = run_check(algorithms, cases, oracle, isolation_options(args), groupings);
-
-  print_check_table(std::cout, result);
-  print_confusion(std::cout, result, args.flag("--confusion"));
-  print_segment_errors(std::cout, result);
-  if (!args.flag("--quiet") && !result.failures.empty()) {
-    std::cout << '\n';
-    print_failures(std::cout, result, cases, max_failures);
-  }
-  const auto scorecards = args.flag("--scorecard") ? scorecards_of(args, algorithms, cases) : std::vector<Scorecard>{};
-  write_outputs(args, result, cases, oracle, scorecards);
+  print_results(args, result);
+  if (args.flag("--scorecard") && (!context.shard || context.shard->index == 0))
+    context.scorecards = scorecards_of(args, algorithms);
+  write_outputs(args, result, context);
   if (report_incomplete(std::cerr, result)) return kFindings;  // a gate that did not run every case fails
-  if (cross_check) return cross_check_verdict(result, cases);
+  if (cross_check) return cross_check_verdict(result);
 
   if (baseline_files.empty()) return kOk;
-  const auto comparison = compare_with_baseline(recorded, result, cases);
+  const auto comparison = compare_with_baseline(recorded, result);
   std::cout << '\n';
   print_rows("new disagreements (not in the baseline)", comparison.new_failures, max_failures);
   print_rows("fixed (in the baseline, no longer occurring)", comparison.fixed, max_failures);
-  print_per_algorithm(result, comparison, cases);
+  print_per_algorithm(result, comparison);
   return comparison.new_failures.empty() ? kOk : kFindings;
 }
 

@@ -22,7 +22,8 @@
   X(scene, "a scene's candidate pairs (FCL's BVH broad phase on moving meshes) as case files")                \
   X(compare, "what changed between two check or bench results (with a U test for times)")                    \
   X(diff, "where two algorithms answer differently (e.g. a port and its authors' code)")                     \
-  X(hunt, "search out an algorithm's failures beyond the corpus and shrink each to a minimal witness")
+  X(hunt, "search out an algorithm's failures beyond the corpus and shrink each to a minimal witness")       \
+  X(merge, "join the shards of a campaign (check --shard K/N) into the result of one run")
 
 namespace tritri::cli {
 
@@ -61,6 +62,7 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
 #include "harness/check/check.hpp"
 #include "harness/run/isolation.hpp"
 
+#include <optional>
 #include <set>
 
 namespace tritri::cli {
@@ -82,5 +84,15 @@ std::string vec_text(const Vec3<double>& v);
 // its first faulting cases and how many were not run, and true (the command then exits 1).
 bool report_stopped(std::ostream& out, const Algorithm& algorithm, const std::vector<Case>& cases,
                     const std::vector<Answers>& answers);
+
+// --shard K/N (check, label, answer): part K of N of the input, cases [first, end) of total
+// (cases/case_stream.hpp, shard_range); counts the cases of the files to find its range.
+struct Shard {
+  std::size_t index = 0, count = 1;
+  CaseRange range;
+  std::size_t total = 0;
+};
+extern const char* const kShardHelp;
+std::optional<Shard> shard_option(const Args& args);
 
 }  // namespace tritri::cli

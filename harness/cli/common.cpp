@@ -75,6 +75,32 @@ bool report_stopped(std::ostream& out, const Algorithm& algorithm, const std::ve
   return stopped.has_value();
 }
 
+const char* const kShardHelp =
+    "  --shard K/N          only part K of N of the input (0 <= K < N; contiguous ranges of the\n"
+    "                       cases in file order): the N outputs concatenated in order (the header\n"
+    "                       line is shard 0's) are the unsharded output\n";
+
+std::optional<Shard> shard_option(const Args& args) {
+  const auto spec = args.value("--shard");
+  if (!spec) return std::nullopt;
+  Shard shard;
+  const auto slash = spec->find('/');
+  const auto digits = [](const std::string& t) { return !t.empty() && t.find_first_not_of("0123456789") == std::string::npos; };
+  if (slash == std::string::npos || !digits(spec->substr(0, slash)) || !digits(spec->substr(slash + 1)))
+    throw UsageError("--shard: expected K/N with 0 <= K < N (e.g. 0/4), got '" + *spec + "'");
+  try {
+    shard.index = std::stoull(spec->substr(0, slash));
+    shard.count = std::stoull(spec->substr(slash + 1));
+  } catch (const std::out_of_range&) {
+    throw UsageError("--shard " + *spec + ": a number is too large");
+  }
+  if (shard.count == 0 || shard.index >= shard.count)
+    throw UsageError("--shard " + *spec + ": K must be below N and N at least 1 (shards are numbered 0 to N-1)");
+  shard.total = count_cases(args.positional());
+  shard.range = shard_range(shard.index, shard.count, shard.total);
+  return shard;
+}
+
 std::string vec_text(const Vec3<double>& v) {
   return format_double(v.x()) + "," + format_double(v.y()) + "," + format_double(v.z());
 }

@@ -620,9 +620,9 @@ class SchemaChecks(unittest.TestCase):
 
     def test_a_version_the_report_does_not_read_is_refused(self):
         def newer(doc):
-            doc["schema"] = "tritri-check/3"
+            doc["schema"] = "tritri-check/4"
         self.assertRegex(self.refusal("check-float.json", newer),
-                         r"check-float\.json: schema 'tritri-check/3'; the report reads tritri-check/2$")
+                         r"check-float\.json: schema 'tritri-check/4'; the report reads tritri-check/2, tritri-check/3$")
         self.assertRegex(self.refusal("bench.json", lambda doc: doc["tritri"].pop("schema")),
                          r"bench\.json: no tritri\.schema; the report reads tritri-bench/1, tritri-bench/2$")
 

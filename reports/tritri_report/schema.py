@@ -15,7 +15,7 @@ null is present: where the writer puts null (an algorithm without the relation l
 # `tritri bench --json` (harness/bench/json_output.cpp), `tritri diff --json`
 # (harness/cli/cmd_diff.cpp), reports/prepare.py, and the papers' files beside each port.
 KINDS = {
-    "check": ("schema", {"tritri-check/2"}, [
+    "check": ("schema", {"tritri-check/2", "tritri-check/3"}, [
         "case_count", "families", "algorithms[].name", "algorithms[].folder",
         "tallies[].algorithm", "tallies[].family", "tallies[].cases", "tallies[].false_positives",
         "tallies[].false_negatives", "tallies[].misclassified", "tallies[].unsupported",

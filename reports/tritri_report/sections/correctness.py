@@ -20,10 +20,25 @@ def render(run, part):
              "that answer the relation level); unsupported: declined, or degenerate input the algorithm "
              "does not accept; crash and timeout: the case killed or hung the algorithm (each runs "
              "isolated).\n" % (c.get("case_count", 0), len(c.get("families", []))))
+    part.add(judged(c))
     per_algorithm(run, part)
     per_family(run, part)
     relations(run, part)
     segments(run, part)
+
+
+def judged(check):
+    """Which judge decided how many cases (tritri-check/3; a version-2 file was judged by the
+    oracle alone)."""
+    j = check.get("judge")
+    if not j:
+        return "Judged by the oracle alone (CGAL), every case.\n"
+    if j["kind"] == "oracle":
+        return "Judged by the oracle alone (CGAL, `--judge oracle`): %d cases.\n" % j["oracle"]
+    return ("Judged exact-first: %d cases decided by `exact` (%d of them cross-checked by the oracle, "
+            "one in %d, seed %d), %d by the oracle (what `exact` declined, and the exact "
+            "intersection for the segment level).\n"
+            % (j["exact"], j["cross_checked"], j["sample"]["one_in"], j["sample"]["seed"], j["oracle"]))
 
 
 def per_algorithm(run, part):
