@@ -3,6 +3,7 @@
 #include "harness/cli/commands.hpp"
 #include "tritri/isa.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <iostream>
@@ -16,7 +17,7 @@ constexpr const char* kHelp =
     "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
     "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
     "                    [--json OUT] [--cases FILE...] [--list] [--cache DIR] [--no-cache]\n"
-    "                    [--authors-code PATH]\n\n"
+    "                    [--float] [--authors-code PATH]\n\n"
     "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
     "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
     "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
@@ -79,6 +80,10 @@ constexpr const char* kHelp =
     "                     counts); default tritri-bench.json; '-' for none\n"
     "  --cases FILE...    case files for the family workloads, instead of the\n"
     "                     corpus generator's families\n"
+    "  --float            also time each algorithm's float instantiation, as NAME@float beside\n"
+    "                     it (each pair rounded to float inside the call, as tritri check\n"
+    "                     --float answers); algorithms without one are named and left out;\n"
+    "                     null@float, timed too, is the cost of that rounding alone\n"
     "  --authors-code PATH  a jgt-code checkout: paper:shen03 reads Shen's data files from it\n"
     "  --list             build the pools, list the benchmarks' names and exit\n"
     "  --cache DIR        keep the labelled pools in DIR and reuse them on the next run with\n"
@@ -119,6 +124,14 @@ bench::Options options_from(const Args& args) {
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
   options.isolation = isolation_options(args);
   if (const auto names = args.values("--algo"); !names.empty()) options.algorithms = select_algorithms(names);
+  if (args.flag("--float")) {
+    options.algorithms = float_instantiations(options.algorithms.empty() ? select_algorithms({}) : options.algorithms,
+                                              true, "tritri bench --float");
+    // The float entries round each pair inside the call: null@float times that rounding alone.
+    const bool has = std::any_of(options.algorithms.begin(), options.algorithms.end(),
+                                 [](const Algorithm* a) { return a->name == "null@float"; });
+    if (!has && registry().find("null")) options.algorithms.push_back(select_algorithms({"null@float"}).front());
+  }
   options.authors_code = args.value("--authors-code").value_or("");
   for (const auto& v : args.values("--level")) {
     const auto level = parse_level(v);
@@ -161,7 +174,7 @@ int cmd_bench(int argc, char** argv) {
             merged({.valued = {"--mode", "--isa", "--filter", "--pool", "--seed", "--repetitions", "--min-time", "--json", "--reference",
                                "--cache", "--authors-code"},
                     .lists = {"--algo", "--level", "--workload", "--cases"},
-                    .flags = {"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"},
+                    .flags = {"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache", "--float"},
                     .operands = false},
                    kRunOptions));
   if (args.help()) {
