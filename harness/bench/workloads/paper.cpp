@@ -1,6 +1,7 @@
 #include "harness/bench/workloads/paper.hpp"
 
 #include "harness/bench/workloads/ratio.hpp"
+#include "cases/util/progress.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -42,7 +43,9 @@ double parse_share(const std::string& text) {
 
 // The pool of the driver's pairs, labelled, in its order (shuffled once when asked).
 Pool labelled_pool(const std::string& value, std::uint64_t seed, const std::vector<TrianglePair>& pairs, bool shuffled) {
-  const std::vector<Truth> truth = label_pairs(pairs);
+  Progress progress("paper:" + value + ": labelling by the oracle", pairs.size());
+  const std::vector<Truth> truth = label_pairs(pairs, progress.callback());
+  progress.finish();
   Pool p{"paper", value, seed, {}, {}};
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < pairs.size(); ++i)
