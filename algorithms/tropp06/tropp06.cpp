@@ -13,6 +13,8 @@ void register_tropp06(Registry& registry) {
       "the published routine: Cramer's rule with shared minors, division-free, 2-D step in x-y, "
       "edge vectors computed inside the call");
   add_level<Level::overlap>(published, []<class T>(const PairT<T>& p) { return tropp06::overlap<T, Projection::xy, false>(p); });
+  // The published interface: the caller supplies the edge vectors, formed before the timed loop.
+  published.stages = {{"edges-given", stage_run<&tropp06::overlap_with_edges>, stage_prepare<&tropp06::with_edges>}};
   registry.add(std::move(published));
 
   Algorithm fixed = variant(paper,

@@ -34,6 +34,16 @@ for l in "${libs[@]}"; do
   plugins+=(--plugin "$out/lib$l.so")
 done
 ! grep -qw float "$out/src/tritri_isectline.c" || fail "the copy still has float"
+# The originals written in float are also built as published: unchanged copies, named @float.
+for l in moller-tri_tri_intersect-float moller-NoDivTriTriIsect-float moller-isectline-float shen-float; do
+  [ -f "$out/lib$l.so" ] || fail "lib$l.so (the float build) was not built"
+done
+cmp -s "$out/src-float/tri_tri.c" "$src/harness/authors/standin/Volume_08/Number_1/Shen2003/tri_tri.c" ||
+  fail "the float build's copy of tri_tri.c is not the file as published"
+float_plugins=()
+for l in moller-tri_tri_intersect-float shen-float; do float_plugins+=(--plugin "$out/lib$l.so"); done
+"$tritri" list --tsv "${float_plugins[@]}" | cut -f1 | grep -qx 'orig-shen03@float' ||
+  fail "the float build of Shen's routine is not named orig-shen03@float"
 grep -qw float "$src/harness/authors/standin/Volume_02/Number_2/Moller1997b/tritri_isectline.c" ||
   fail "the stand-in should declare float (so that the change is exercised)"
 
@@ -68,4 +78,12 @@ PY
   --workload ratio:0.5 --pool 1024 --repetitions 1 --min-time 0.001 --json "$tmp/bench.json" >"$tmp/bench.txt" 2>&1 ||
   fail "tritri bench with the plug-ins: $(tail -20 "$tmp/bench.txt")"
 grep -q 'orig-guigue03' "$tmp/bench.txt" || fail "bench did not time orig-guigue03"
+
+# 5. The float builds beside the ports' float instantiations, in one run: both are timed.
+"$tritri" bench "${float_plugins[@]}" --algo shen03@float,orig-shen03@float,moller97@float,orig-moller97@float \
+  --mode batch --workload ratio:0.5 --pool 1024 --repetitions 1 --min-time 0.001 --json "$tmp/float.json" \
+  >"$tmp/float.txt" 2>&1 || fail "tritri bench with the float builds: $(tail -20 "$tmp/float.txt")"
+for a in shen03@float orig-shen03@float moller97@float orig-moller97@float; do
+  grep -q "^$a/overlap/ratio:0.50/batch" "$tmp/float.txt" || fail "bench did not time $a: $(tail -20 "$tmp/float.txt")"
+done
 echo "ok"

@@ -9,5 +9,5 @@
 TRITRI_AUTHORS_SEGMENT(tri_tri_intersect_with_isectline)
 
 TRITRI_AUTHORS_PLUGIN("orig-moller97-segment", "jgt-code Volume_02/Number_2/Moller1997b/tritri_isectline.c",
-                      "the authors' code: tri_tri_intersect_with_isectline, float changed to double", 1e-6,
+                      "the authors' code: tri_tri_intersect_with_isectline" TRITRI_AUTHORS_AS_BUILT, 1e-6,
                       "|N·V + d|, unnormalised plane distance, snapped to 0 below it", segment)

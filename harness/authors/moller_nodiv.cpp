@@ -8,5 +8,5 @@
 TRITRI_AUTHORS_OVERLAP(NoDivTriTriIsect)
 
 TRITRI_AUTHORS_PLUGIN("orig-moller97-nodiv", "jgt-code Volume_02/Number_2/Moller1997b/opttritri.c",
-                      "the authors' code: NoDivTriTriIsect, float changed to double", 1e-6,
+                      "the authors' code: NoDivTriTriIsect" TRITRI_AUTHORS_AS_BUILT, 1e-6,
                       "|N·V + d|, unnormalised plane distance, snapped to 0 below it", nullptr)

@@ -7,5 +7,5 @@
 TRITRI_AUTHORS_OVERLAP(tri_tri_intersect)
 
 TRITRI_AUTHORS_PLUGIN("orig-moller97", "jgt-code Volume_02/Number_2/Moller1997b/tritri_isectline.c",
-                      "the authors' code: tri_tri_intersect, float changed to double", 1e-6,
+                      "the authors' code: tri_tri_intersect" TRITRI_AUTHORS_AS_BUILT, 1e-6,
                       "|N·V + d|, unnormalised plane distance, snapped to 0 below it", 0)

@@ -9,5 +9,5 @@
 TRITRI_AUTHORS_OVERLAP(tri_tri_intersect)
 
 TRITRI_AUTHORS_PLUGIN("orig-shen03", "jgt-code Volume_08/Number_1/Shen2003/tri_tri.c",
-                      "the authors' code: tri_tri_intersect, float changed to double", 1e-7,
+                      "the authors' code: tri_tri_intersect" TRITRI_AUTHORS_AS_BUILT, 1e-7,
                       "|N·V + d| and the line-line triple products, unnormalised", 0)

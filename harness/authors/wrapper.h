@@ -8,7 +8,13 @@
  *
  * Each wrapper #includes the one source file it wraps (the copy in the build directory), so the
  * original's static helpers and macros stay private to its plug-in; every plug-in is built with
- * -fvisibility=hidden and exports only tritri_plugin_entry (TRITRI_AUTHORS_EXPORT). */
+ * -fvisibility=hidden and exports only tritri_plugin_entry (TRITRI_AUTHORS_EXPORT).
+ *
+ * TRITRI_AUTHORS_FLOAT (scripts/authors-code defines it for the originals written in float,
+ * built as published, unchanged): the routine takes `float v[3]`, so each pair is rounded to
+ * float into a local array first (as a port's NAME@float instantiation rounds it inside the
+ * call), and the plug-in's name gets "@float", its port's float instantiation's suffix. A
+ * float original's summary ends with TRITRI_AUTHORS_AS_BUILT, which says which build it is. */
 #ifndef TRITRI_AUTHORS_WRAPPER_H
 #define TRITRI_AUTHORS_WRAPPER_H
 
@@ -18,13 +24,32 @@
 
 #define TRITRI_AUTHORS_EXPORT __attribute__((visibility("default")))
 
-/* Vertex k (0..5: T1's a, b, c, then T2's) of pair i. Non-const: the originals' signatures. */
-#define TRITRI_VERTEX(pairs, i, k) ((double*)((pairs) + 18 * (i) + 3 * (k)))
+#ifdef TRITRI_AUTHORS_FLOAT
+typedef float tritri_authors_real;
+#define TRITRI_AUTHORS_NAME(name) name "@float"
+#define TRITRI_AUTHORS_AS_BUILT ", built as published in float (each pair rounded to float)"
+#else
+typedef double tritri_authors_real;
+#define TRITRI_AUTHORS_NAME(name) name
+#define TRITRI_AUTHORS_AS_BUILT ", float changed to double"
+#endif
 
-/* The six vertices of pair i, as the originals' six triangle parameters. */
-#define TRITRI_VERTICES(pairs, i)                                                                 \
-  TRITRI_VERTEX(pairs, i, 0), TRITRI_VERTEX(pairs, i, 1), TRITRI_VERTEX(pairs, i, 2),              \
-      TRITRI_VERTEX(pairs, i, 3), TRITRI_VERTEX(pairs, i, 4), TRITRI_VERTEX(pairs, i, 5)
+/* Pair i's 18 coordinates as the routine's scalar: in place for double (no copy per pair, as the
+ * ports read the pair in place too), rounded into `local` for float. Non-const: the originals'
+ * signatures. */
+static inline tritri_authors_real* tritri_authors_pair(const double* pairs, size_t i, tritri_authors_real* local) {
+#ifdef TRITRI_AUTHORS_FLOAT
+  int k;
+  for (k = 0; k < 18; ++k) local[k] = (float)pairs[18 * i + k];
+  return local;
+#else
+  (void)local;
+  return (double*)(pairs + 18 * i);
+#endif
+}
+
+/* The six vertices of a pair's 18 coordinates, as the originals' six triangle parameters. */
+#define TRITRI_VERTICES(x) (x), (x) + 3, (x) + 6, (x) + 9, (x) + 12, (x) + 15
 
 /* The batch function `overlap` over a routine(six vertices) whose non-zero return means "meet".
  * A macro, not a function taking a pointer: the call stays direct, as in a port, and the
@@ -32,26 +57,33 @@
 #define TRITRI_AUTHORS_OVERLAP(routine)                                                           \
   static void overlap(const double* pairs, size_t n, unsigned char* out) {                        \
     size_t i;                                                                                     \
-    for (i = 0; i < n; ++i) out[i] = routine(TRITRI_VERTICES(pairs, i)) ? TRITRI_YES : TRITRI_NO; \
+    tritri_authors_real local[18];                                                                \
+    for (i = 0; i < n; ++i) {                                                                     \
+      tritri_authors_real* x = tritri_authors_pair(pairs, i, local);                              \
+      out[i] = routine(TRITRI_VERTICES(x)) ? TRITRI_YES : TRITRI_NO;                              \
+    }                                                                                             \
   }
 
 /* The batch functions `overlap` and `segment` over a routine(six vertices, int* coplanar,
  * double end1[3], double end2[3]) returning non-zero where the triangles meet. */
 #define TRITRI_AUTHORS_SEGMENT(routine)                                                           \
-  static int call(const double* pairs, size_t i, int* coplanar, double* p, double* q) {           \
+  static int call(const double* pairs, size_t i, int* coplanar, tritri_authors_real* p,          \
+                  tritri_authors_real* q) {                                                       \
+    tritri_authors_real local[18];                                                                \
+    tritri_authors_real* x = tritri_authors_pair(pairs, i, local);                                \
     *coplanar = 0;                                                                                \
-    return routine(TRITRI_VERTICES(pairs, i), coplanar, p, q);                                    \
+    return routine(TRITRI_VERTICES(x), coplanar, p, q);                                           \
   }                                                                                               \
   static void overlap(const double* pairs, size_t n, unsigned char* out) {                        \
     size_t i;                                                                                     \
     int coplanar;                                                                                 \
-    double p[3], q[3];                                                                            \
+    tritri_authors_real p[3], q[3];                                                               \
     for (i = 0; i < n; ++i) out[i] = call(pairs, i, &coplanar, p, q) ? TRITRI_YES : TRITRI_NO;    \
   }                                                                                               \
   static void segment(const double* pairs, size_t n, tritri_segment* out) {                       \
     size_t i;                                                                                     \
     int coplanar;                                                                                 \
-    double p[3], q[3];                                                                            \
+    tritri_authors_real p[3], q[3];                                                               \
     for (i = 0; i < n; ++i) {                                                                     \
       const int meet = call(pairs, i, &coplanar, p, q);                                           \
       tritri_authors_segment(meet, coplanar, p, q, &out[i]);                                      \
@@ -68,7 +100,8 @@
  * wrapper defines and `segment_fn` (`segment`, or 0 where the routine gives no segment); and
  * the one exported symbol. */
 #define TRITRI_AUTHORS_PLUGIN(name, citation, summary, tolerance, tolerance_quantity, segment_fn)  \
-  static const tritri_plugin kPlugin = {TRITRI_PLUGIN_ABI, name, citation, summary, 1, tolerance, \
+  static const tritri_plugin kPlugin = {TRITRI_PLUGIN_ABI, TRITRI_AUTHORS_NAME(name), citation,   \
+                                        summary, 1, tolerance,                                    \
                                         tolerance_quantity, 0, 0, overlap, 0, segment_fn};        \
   TRITRI_AUTHORS_EXTERN_C TRITRI_AUTHORS_EXPORT const tritri_plugin* tritri_plugin_entry(void) {  \
     return &kPlugin;                                                                              \
@@ -76,7 +109,7 @@
 
 /* A segment answer as the ports give it (harness/README.md, segment level): coplanar contact
  * without a segment, empty, a point when both ends are equal, else the segment. */
-static inline void tritri_authors_segment(int meet, int coplanar, const double* p, const double* q,
+static inline void tritri_authors_segment(int meet, int coplanar, const tritri_authors_real* p, const tritri_authors_real* q,
                                           tritri_segment* out) {
   int i;
   if (!meet) {

@@ -94,7 +94,8 @@ int run(const Options& options, std::ostream& out) {
   out << "tritri bench: building pools of " << options.pool_size << " pairs (seed " << options.seed
       << ") and labelling them with the oracle...\n";
   out.flush();
-  WorkloadInput input{{options.pool_size, options.seed}, options.quick, options.family_corpus, options.read_family_cases};
+  WorkloadInput input{{options.pool_size, options.seed}, options.quick, options.family_corpus, options.read_family_cases,
+                      options.authors_code};
   const Planned planned = build_pools_cached(selected, input, options.cache, out);
 
   // ---- the entries: checked and counted before anything is timed ----

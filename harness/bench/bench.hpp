@@ -71,6 +71,7 @@ struct Options {
   CorpusIdentity family_corpus;
   std::function<std::vector<Case>()> read_family_cases;
   bool quick = false;
+  std::string authors_code;  // a jgt-code checkout: paper:shen03 reads its data files (workloads/paper.hpp)
   bool count_operations = true;
   // Each algorithm is first run on each pool in a child process: one that crashes or hangs there
   // is reported with the pair responsible and not timed (timing runs in this process).

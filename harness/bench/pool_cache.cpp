@@ -169,9 +169,13 @@ std::string pool_cache_key(const std::vector<Selected>& selected, const Workload
   key += "family cases " + (input.corpus.files.empty() ? generator_source(input) : "files " + input.corpus.hash) + "\n";
   for (const Selected& s : selected) {
     key += "workload " + s.workload->kind() + " from " + s.workload->pools_from() +
-           (s.workload->times_stages() ? " stages" : " levels") + ":";
+           (s.workload->times_levels_and_stages() ? " levels+stages"
+            : s.workload->times_stages()       ? " stages"
+                                               : " levels") +
+           ":";
     for (const auto& v : s.values) key += " " + v;
     key += "\n";
+    if (const std::string id = s.workload->cache_identity(input); !id.empty()) key += "reads " + id + "\n";
   }
   return key;
 }

@@ -67,7 +67,8 @@ void print_times(const EntryList& timed, const Summary& summary, int repetitions
       << "\nin the same mode on the same pool (--reference).\n"
       << "'!': wrong answers on that pool (see the warnings); floor and null are not tests.\n";
   for (const Table& table : tables_of(timed, true)) {
-    out << '\n' << table.group << (table.group == "stage" ? " (pool ratio:0.50)" : "") << '\n';
+    // Stages run on the ratio:0.50 pool (the stage workload) and on the paper drivers' pools.
+    out << '\n' << table.group << (table.group == "stage" ? " (columns: ratio:VALUE or paper:VALUE pools)" : "") << '\n';
     out << pad("algorithm/level/mode", 34, true);
     for (const Pool* p : table.pools) out << pad(column_title(p, table.group), 14);
     out << '\n';

@@ -78,7 +78,12 @@ Planned build_pools(const std::vector<Selected>& selected, const WorkloadInput& 
     auto it = std::find_if(asked.begin(), asked.end(), [&](const Asked& a) { return a.builder == builder; });
     if (it == asked.end()) it = asked.insert(asked.end(), Asked{builder, {}, {}, {}});
     add_distinct(it->values, s.values);
-    add_distinct(s.workload->times_stages() ? it->for_stages : it->for_levels, s.values);
+    if (s.workload->times_levels_and_stages()) {
+      add_distinct(it->for_levels, s.values);
+      add_distinct(it->for_stages, s.values);
+    } else {
+      add_distinct(s.workload->times_stages() ? it->for_stages : it->for_levels, s.values);
+    }
   }
   Planned planned;
   for (const Asked& a : asked) {

@@ -26,6 +26,8 @@ struct WorkloadInput {
   // family: the case files given (--cases) and how to read them; no files: the generator's.
   CorpusIdentity corpus;
   std::function<std::vector<Case>()> read_cases;
+  // paper:shen03: a jgt-code checkout holding the authors' data files (--authors-code); "": none.
+  std::string authors_code;
 };
 
 struct WorkloadPools {
@@ -55,6 +57,11 @@ class Workload {
   virtual std::string pools_from() const { return kind(); }
   // What is timed on its pools: every algorithm's levels, or else their registered stages.
   virtual bool times_stages() const { return false; }
+  // Both: its pools time the levels and the registered stages (the paper drivers' pools).
+  virtual bool times_levels_and_stages() const { return false; }
+  // What its pools depend on beyond its values and the input's seed, size and cases (the
+  // content of files it reads), for the pool cache's key; "" when nothing.
+  virtual std::string cache_identity(const WorkloadInput& /*input*/) const { return ""; }
 
   // Builds the pools of `values` (canonical and distinct). Only called on the workloads that
   // other workloads' pools_from() names, or that name themselves.

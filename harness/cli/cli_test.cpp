@@ -90,6 +90,23 @@ TEST(Cli, CheckFailsOnANewDisagreementWithTheBaseline) {
   EXPECT_NE(r.out.find("fixed (in the baseline, no longer occurring): 1"), std::string::npos) << r.out;
 }
 
+// NAME@float names a port's float instantiation wherever an algorithm is named; bench --float sets
+// each port's beside it (and null@float, the rounding alone), leaving out those without one.
+TEST(Cli, FloatInstantiationsAreNamedAndTimedBesideTheDoubleOnes) {
+  Outcome r = tritri("answer --algo moller97@float " + kBuiltin);
+  EXPECT_EQ(r.status, 0) << r.out;
+  r = tritri("answer --algo cgal@float " + kBuiltin);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("cgal@float: none of the chosen algorithms has a float instantiation"), std::string::npos) << r.out;
+  r = tritri("bench --float --no-cache --algo moller97,cgal --mode batch --level overlap --workload ratio:0.5 --pool 512 "
+             "--repetitions 1 --min-time 0.001 --no-ops --json -");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("no float instantiation, left out: cgal"), std::string::npos) << r.out;
+  for (const char* row : {"\nmoller97/overlap/batch", "\nmoller97@float/overlap/batch", "\nnull@float/overlap/batch"})
+    EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+  EXPECT_EQ(r.out.find("\ncgal/overlap/batch"), std::string::npos) << r.out;
+}
+
 TEST(Cli, ShowGivesOneCaseWithEveryAnswer) {
   const Outcome r = tritri("show cross-pierce " + kBuiltin);
   ASSERT_EQ(r.status, 0) << r.out;

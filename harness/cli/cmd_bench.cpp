@@ -3,6 +3,7 @@
 #include "harness/cli/commands.hpp"
 #include "tritri/isa.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <iostream>
@@ -15,7 +16,8 @@ constexpr const char* kHelp =
     "                    [--mode call|batch|both] [--isa NAME]\n"
     "                    [--reference NAME] [--filter REGEX] [--pool N] [--seed S]\n"
     "                    [--repetitions N] [--min-time SEC] [--no-interleave] [--no-ops]\n"
-    "                    [--json OUT] [--cases FILE...] [--list] [--cache DIR] [--no-cache]\n\n"
+    "                    [--json OUT] [--cases FILE...] [--list] [--cache DIR] [--no-cache]\n"
+    "                    [--float] [--authors-code PATH]\n\n"
     "Times every algorithm on every workload and level it serves, on Google Benchmark.\n"
     "Workloads are pools of distinct pairs, built and labelled by the exact oracle before\n"
     "anything is timed, shuffled once and streamed in order (default 65536 pairs):\n"
@@ -30,6 +32,11 @@ constexpr const char* kHelp =
     "             262144, 1048576: how a small pool lets the branch predictor learn the\n"
     "             answers. Not in the default set (labelling a million pairs takes a while);\n"
     "             --pool does not apply to it\n"
+    "  paper:P    P = shen03, shen03-drawn, tropp06, yuhe13: a paper's own timing driver\n"
+    "             (its distribution, pool, order and ratio), with /shuffled, /n:N, /r:R,\n"
+    "             /ours to change one thing of it (harness/bench/workloads/paper.hpp); not\n"
+    "             in the default set. paper:shen03 reads the authors' data files\n"
+    "             (--authors-code) and is skipped with one line without them\n"
     "Benchmarks are named algo/level/workload:value/mode (e.g. moller97/overlap/ratio:0.50/call;\n"
     "a stage: yuhe13/stage:transform/ratio:0.50/batch). Every\n"
     "algorithm is checked on every pool first: 'wrong' counts its disagreements with the\n"
@@ -56,8 +63,8 @@ constexpr const char* kHelp =
     "                     most NAME, to show the times on an older CPU; refused when this\n"
     "                     machine lacks NAME. Sets TRITRI_ISA (tritri/isa.hpp), which they read;\n"
     "                     the JSON records the ISA used, the machine's and the CPU model\n"
-    "  --workload W...    ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N;\n"
-    "                     default ratio, type, family, stage\n"
+    "  --workload W...    ratio, ratio:R, type, type:T, family, family:F, stage, size, size:N,\n"
+    "                     scene, scene:NAME, paper, paper:P; default ratio, type, family, stage\n"
     "  --reference NAME   every time is also given relative to NAME's overlap level (or its\n"
     "                     first level) on the same pool, in the same run (default moller97);\n"
     "                     the JSON records it and each result's 'relative_to_reference'\n"
@@ -73,6 +80,11 @@ constexpr const char* kHelp =
     "                     counts); default tritri-bench.json; '-' for none\n"
     "  --cases FILE...    case files for the family workloads, instead of the\n"
     "                     corpus generator's families\n"
+    "  --float            also time each algorithm's float instantiation, as NAME@float beside\n"
+    "                     it (each pair rounded to float inside the call, as tritri check\n"
+    "                     --float answers); algorithms without one are named and left out;\n"
+    "                     null@float, timed too, is the cost of that rounding alone\n"
+    "  --authors-code PATH  a jgt-code checkout: paper:shen03 reads Shen's data files from it\n"
     "  --list             build the pools, list the benchmarks' names and exit\n"
     "  --cache DIR        keep the labelled pools in DIR and reuse them on the next run with\n"
     "                     the same workloads, seed, pool size, cases, generator and oracle\n"
@@ -112,6 +124,15 @@ bench::Options options_from(const Args& args) {
   bench::Options options = args.flag("--quick") ? bench::quick_options() : bench::Options{};
   options.isolation = isolation_options(args);
   if (const auto names = args.values("--algo"); !names.empty()) options.algorithms = select_algorithms(names);
+  if (args.flag("--float")) {
+    options.algorithms = float_instantiations(options.algorithms.empty() ? select_algorithms({}) : options.algorithms,
+                                              true, "tritri bench --float");
+    // The float entries round each pair inside the call: null@float times that rounding alone.
+    const bool has = std::any_of(options.algorithms.begin(), options.algorithms.end(),
+                                 [](const Algorithm* a) { return a->name == "null@float"; });
+    if (!has && registry().find("null")) options.algorithms.push_back(select_algorithms({"null@float"}).front());
+  }
+  options.authors_code = args.value("--authors-code").value_or("");
   for (const auto& v : args.values("--level")) {
     const auto level = parse_level(v);
     if (!level) throw UsageError("unknown level '" + v + "' (overlap, relation, segment)");
@@ -151,9 +172,9 @@ bench::Options options_from(const Args& args) {
 int cmd_bench(int argc, char** argv) {
   Args args(argc, argv,
             merged({.valued = {"--mode", "--isa", "--filter", "--pool", "--seed", "--repetitions", "--min-time", "--json", "--reference",
-                               "--cache"},
+                               "--cache", "--authors-code"},
                     .lists = {"--algo", "--level", "--workload", "--cases"},
-                    .flags = {"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache"},
+                    .flags = {"--quick", "--no-interleave", "--no-ops", "--list", "--no-cache", "--float"},
                     .operands = false},
                    kRunOptions));
   if (args.help()) {

@@ -8,31 +8,11 @@
 #include "cases/util/atomic_file.hpp"
 
 #include <algorithm>
-#include <deque>
 #include <iostream>
 #include <map>
-#include <tuple>
 
 namespace tritri::cli {
 namespace {
-
-// --float: each chosen algorithm that has float instantiations is replaced by a copy answering
-// through them, named NAME@float, so the stability report can compare float with double on
-// the same cases through the same scoring. Algorithms with none (FCL, CGAL call libraries on
-// double) are left out and named on stderr. The copies live as long as the process, since
-// results keep pointers to them.
-std::vector<const Algorithm*> float_instantiations(const std::vector<const Algorithm*>& chosen) {
-  static std::deque<Algorithm> copies;
-  std::vector<const Algorithm*> out;
-  std::string skipped;
-  for (const Algorithm* a : chosen) {
-    if (auto f = a->on_scalar(Scalar::float_)) out.push_back(&copies.emplace_back(std::move(*f)));
-    else skipped += (skipped.empty() ? "" : ", ") + a->name;
-  }
-  if (!skipped.empty()) std::cerr << "tritri check --float: no float instantiation, left out: " << skipped << '\n';
-  if (out.empty()) throw UsageError("--float: none of the chosen algorithms has a float instantiation");
-  return out;
-}
 
 // --group-by SPEC (repeatable): each a grouping of the cases by their labels (grouping.hpp).
 std::vector<Grouping> groupings_of(const std::vector<std::string>& specs) {
@@ -274,7 +254,8 @@ int cmd_check(int argc, char** argv) {
   if (cross_check && (args.flag("--float") || !args.values("--algo").empty()))
     throw UsageError("--cross-check checks the 'exact' algorithm on double: no --algo or --float with it");
   const auto algorithms = cross_check ? select_algorithms({kCrossCheckAlgorithm})
-                          : args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")))
+                          : args.flag("--float") ? float_instantiations(select_algorithms(args.values("--algo")), false,
+                                                                        "tritri check --float")
                                                  : select_algorithms(args.values("--algo"));
   const std::size_t max_failures = args.count("--max-failures", 20);
   // Read the baselines before the (possibly long) run, so a wrong path fails at once.

@@ -51,9 +51,19 @@ TRITRI_CLI_COMMANDS(TRITRI_CLI_DECLARE)
 #undef TRITRI_CLI_DECLARE
 
 // Algorithms named by --algo (Args has split its list); when none is named, all but the
-// other builds (NAME@v3fma: run when named, Algorithm::build). Throws
-// UsageError naming an unknown algorithm and listing the known ones.
+// other builds (NAME@v3fma: run when named, Algorithm::build). NAME@float names NAME's float
+// instantiation (float_instantiations below). Throws UsageError naming an unknown algorithm and
+// listing the known ones.
 std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& names);
+
+// Each chosen algorithm's float instantiation (Algorithm::on_scalar), named NAME@float, in place
+// of it (`beside`: false) or right after it (true). Those with none (FCL, CGAL: libraries called
+// on double; plug-ins) are left out, both builds, and named on stderr, after `who` ("tritri
+// check --float"). The copies
+// live as long as the process, since results keep pointers to them. Throws UsageError when no
+// chosen algorithm has one.
+std::vector<const Algorithm*> float_instantiations(const std::vector<const Algorithm*>& chosen, bool beside,
+                                                   const std::string& who);
 
 }  // namespace tritri::cli
 

@@ -3,10 +3,14 @@
 #include "harness/cli/commands.hpp"
 
 #include <cstring>
+#include <deque>
+#include <string_view>
 #include <iostream>
 
 namespace tritri::cli {
 namespace {
+
+constexpr std::string_view kFloatSuffix = "@float";  // as Algorithm::on_scalar names them
 
 #define TRITRI_CLI_ROW(name, summary) {#name, summary, cmd_##name},
 constexpr Command kCommands[] = {TRITRI_CLI_COMMANDS(TRITRI_CLI_ROW)};
@@ -31,6 +35,8 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
   }
   for (const auto& name : names) {
     const Algorithm* a = registry().find(name);
+    if (!a && name.ends_with(kFloatSuffix) && registry().find(name.substr(0, name.size() - kFloatSuffix.size())))
+      a = float_instantiations({registry().find(name.substr(0, name.size() - kFloatSuffix.size()))}, false, name)[0];
     if (!a) {
       std::string known;
       for (const auto& k : registry().all()) known += (known.empty() ? "" : ", ") + k.name;
@@ -39,6 +45,25 @@ std::vector<const Algorithm*> select_algorithms(const std::vector<std::string>& 
     if (std::find(chosen.begin(), chosen.end(), a) == chosen.end()) chosen.push_back(a);
   }
   return chosen;
+}
+
+std::vector<const Algorithm*> float_instantiations(const std::vector<const Algorithm*>& chosen, bool beside,
+                                                   const std::string& who) {
+  static std::deque<Algorithm> copies;
+  std::vector<const Algorithm*> out;
+  std::string skipped;
+  for (const Algorithm* a : chosen) {
+    auto f = a->on_scalar(Scalar::float_);
+    if (!f) {
+      skipped += (skipped.empty() ? "" : ", ") + a->name;
+      continue;
+    }
+    if (beside) out.push_back(a);
+    out.push_back(&copies.emplace_back(std::move(*f)));
+  }
+  if (!skipped.empty()) std::cerr << who << ": no float instantiation, left out: " << skipped << '\n';
+  if (out.empty()) throw UsageError(who + ": none of the chosen algorithms has a float instantiation");
+  return out;
 }
 
 }  // namespace tritri::cli
