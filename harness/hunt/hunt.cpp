@@ -282,7 +282,7 @@ HuntResult Hunter::run() {
 void check_level(const Algorithm& algorithm, Level level) {
   // Every algorithm answers overlap, directly or through its relation or segment (overlap_of).
   if (level == Level::relation && !algorithm.answers(Level::relation))
-    throw std::invalid_argument("hunt: " + algorithm.name + " does not answer the relation level");
+    throw std::invalid_argument(algorithm.name + " does not answer the relation level (--level relation)");
 }
 
 HuntResult run_hunt(const Algorithm& algorithm, const HuntOptions& options) {
