@@ -173,7 +173,9 @@ void write_check_json(std::ostream& out, const CheckResult& result, const CheckJ
   dump_check_json(out, check_json(result, context));
 }
 
-void dump_check_json(std::ostream& out, const nlohmann::json& doc) { out << doc.dump(1) << '\n'; }
+// Streamed (std::setw: the indent of dump(1)), so a long failure list is not held twice, as a
+// document and as one string.
+void dump_check_json(std::ostream& out, const nlohmann::json& doc) { out << std::setw(1) << doc << '\n'; }
 
 std::vector<Failure> capped_failures(const std::vector<Failure>& failures, std::size_t cap) {
   std::vector<Failure> kept;
