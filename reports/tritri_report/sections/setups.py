@@ -58,11 +58,21 @@ def pool_note(bench, workload):
     return ((bench or {}).get("context") or {}).get("paper " + workload.split(":", 1)[-1], "")
 
 
-def largest_move(rows, base):
-    """(label, value) of the row whose value differs most from `base`: the factor that, varied
-    alone, moves the result most. rows: [(label, value)]."""
-    moved = [(label, v) for label, v in rows if v is not None and base is not None]
-    return max(moved, key=lambda lv: abs(lv[1] - base)) if moved else (None, None)
+def moves_text(changes, target, fmt, target_name):
+    """Which change alone accounts for the difference between the paper's set-up and ours.
+    changes: [(what, before, after)], each one difference from the paper's set-up varied alone
+    (before: the result without it, after: with it); target: our pools' result. Names the change
+    that brings the result closest to ours, and the one that moves it most, when another."""
+    changes = [c for c in changes if c[1] is not None and c[2] is not None]
+    if not changes or target is None:
+        return "-"
+    closest = min(changes, key=lambda c: abs(c[2] - target))
+    largest = max(changes, key=lambda c: abs(c[2] - c[1]))
+    text = "toward ours (%s %s): %s alone, %s → %s" % (target_name, fmt(target), closest[0], fmt(closest[1]),
+                                                       fmt(closest[2]))
+    if largest is not closest:
+        text += "; the largest move: %s, %s → %s" % (largest[0], fmt(largest[1]), fmt(largest[2]))
+    return text + " (table below)"
 
 
 def float_times(bench, workload):

@@ -80,18 +80,12 @@ def ours_cell(ratios):
 
 
 def moves(ratios, base):
-    """The one change from the paper's set-up that moves the ports' ratio most, and by how much:
-    order, size, ratio and distribution from the rebuilt set-up (the same pairs' generator), the
-    scalar type on the paper's own."""
+    """Order, size, ratio and distribution changed alone from the rebuilt set-up (the same pairs'
+    generator), the scalar type on the paper's own; set against our ratio pool at its ratio."""
     drawn = ratios[DRAWN][0]
-    changes = [(w, drawn, ratios[w][0]) for w, _ in FACTORS[2:6]] + [("float", ratios[base][0], ratios[base][1])]
-    changes = [c for c in changes if c[1] and c[2]]
-    if not changes:
-        return "-"
-    label, before, after = max(changes, key=lambda c: abs(c[2] - c[1]))
-    what = dict(FACTORS).get(label, "scalar type: float in place of double").split(":")[0]
-    return "%s (%s): %s → %s; each other change alone moves it less (table below)" % (
-        what, label, ratio(before), ratio(after))
+    changes = [(dict(FACTORS)[w].split(":")[0] + " (" + w.replace("paper:", "") + ")", drawn, ratios[w][0])
+               for w, _ in FACTORS[2:6]] + [("scalar type (float)", ratios[base][0], ratios[base][1])]
+    return setups.moves_text(changes, ratios["ratio:0.10"][0], ratio, "ratio:0.10")
 
 
 def render(run, part):
