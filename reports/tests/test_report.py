@@ -279,6 +279,67 @@ class ReportFromFixture(unittest.TestCase):
             self.assertEqual(r[header.index("to scalar path")], markdown.pct(c["to_scalar"] / c["pairs"]), r[0])
             self.assertIn("isa:" + r[-1], c)
 
+    # ---- part 6: the papers' own drivers (papers-bench.json) and float against double ----
+    def papers_median(self, algorithm, workload, stage=None):
+        """The median of a result of papers-bench.json, read here without the report's code."""
+        for e in load("papers-bench.json")["tritri"]["results"]:
+            if e["algorithm"] == algorithm and e["workload"] == workload and e.get("stage") == stage and (
+                    stage is not None or e["level"] in ("overlap", "relation")):
+                return e["ns_per_pair_median"]
+        return None
+
+    def test_shen_table_is_shen_over_moller_on_each_setup(self):
+        tables = tables_in(self.text, "Shen, Heng & Tang 2003")
+        header, rows = tables[1]
+        self.assertEqual(header[2:4], ["ports, double", "ports, float"])
+        self.assertEqual(rows[0][0], "paper:shen03")  # the authors' data files were read
+        self.assertIn("ratio:0.50", [r[0] for r in rows])
+        for r in rows:
+            for col, suffix, prefix in ((2, "", ""), (3, "@float", ""), (4, "@float", "orig-"), (5, "", "orig-")):
+                a = self.papers_median(prefix + "shen03" + suffix, r[0])
+                b = self.papers_median(prefix + "moller97" + suffix, r[0])
+                self.assertEqual(r[col], markdown.ratio(a / b) if a and b else "-", (r[0], header[col]))
+        claim = tables[0][1][0]
+        self.assertIn("ports " + markdown.ratio(self.papers_median("shen03", "paper:shen03")
+                                                / self.papers_median("moller97", "paper:shen03")), claim[1])
+
+    def test_tropp_gain_is_against_the_fastest_earlier_test_with_the_edges_given_or_not(self):
+        tables = tables_in(self.text, "Tropp, Tal & Shimshoni 2006")
+        header, rows = next(t for t in tables if t[0][:3] == ["set-up", "what changes", "gain, edges given"])
+        earlier = load_published("tropp06")["earlier_tests"]
+        checked = 0
+        for r in rows[:-1]:  # the last row is the float one
+            times = {a: self.papers_median(a, r[0]) for a in earlier}
+            fastest = min((a for a in earlier if times[a]), key=lambda a: times[a])
+            self.assertEqual(r[4], fastest, r[0])
+            given = self.papers_median("tropp06", r[0], stage="edges-given")
+            inside = self.papers_median("tropp06", r[0])
+            self.assertEqual(r[2], "%+.1f%%" % (100 * (1 - given / times[fastest])) if given else "-", r[0])
+            self.assertEqual(r[3], "%+.1f%%" % (100 * (1 - inside / times[fastest])), r[0])
+            checked += 1
+        self.assertGreaterEqual(checked, 4)
+
+    def test_yuhe_table1_has_the_forty_pairs_rows(self):
+        header, rows = tables_in(self.text, "Yu & He 2013, Table 1 and the singular suite")[0]
+        forty = [r for r in rows if "paper:yuhe13)" in r[0]]
+        self.assertEqual(len(forty), 1)
+        t = self.papers_median("yuhe13", "paper:yuhe13", stage="transform")
+        both = self.papers_median("yuhe13", "paper:yuhe13", stage="both")
+        self.assertEqual(forty[0][4], "%.1f%%" % (100 * t / both))
+
+    def test_float_table_gives_double_and_float_per_port_at_three_ratios(self):
+        results = load("float-bench.json")["tritri"]["results"]
+        header, rows = tables_in(self.text, "Float and double: time per pair")[0]
+        self.assertEqual(header, ["port", "ratio:0.00", "ratio:0.50", "ratio:1.00"])
+        med = {(e["algorithm"], e["workload"]): e["ns_per_pair_median"] for e in results}
+        ports = sorted({e["algorithm"] for e in results if e["algorithm"] + "@float" in {x["algorithm"] for x in results}
+                        and e["algorithm"] not in ("null", "floor")})
+        self.assertEqual(sorted(r[0] for r in rows), ports)
+        for r in rows:
+            for w, cell in zip(header[1:], r[1:]):
+                d, f = med[(r[0], w)], med[(r[0] + "@float", w)]
+                self.assertEqual(cell, "%s / %s (%s)" % (markdown.ns(d), markdown.ns(f), markdown.ratio(f / d)))
+
     def test_compiler_answer_tables_match_the_diff(self):
         diff = load("compiler-diff.json")
         tables = tables_in(self.text, "5 What the compiler changes")
@@ -408,6 +469,7 @@ class MissingInputs(unittest.TestCase):
                 text = f.read()
             self.assertIn(markdown.NOT_MEASURED, text)
             self.assertIn("compiler-diff.json", section(text, "5 What the compiler changes"))
+            self.assertIn("no float-bench.json", section(text, "Float and double: time per pair"))
             self.assertEqual(r.figures, [])
         finally:
             shutil.rmtree(src)

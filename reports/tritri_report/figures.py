@@ -241,19 +241,20 @@ def small_multiples(panels, path, xlabel, title, xscale="log"):
     _save(fig, path)
 
 
-def grouped_ratio_bars(groups, series, path, ylabel, title):
-    """groups: category names; series: {label: [value per group]}, log y."""
+def grouped_ratio_bars(groups, series, path, ylabel, title, rotation=0):
+    """groups: category names; series: {label: [value per group]}, log y. `rotation` turns long
+    category names (degrees), and widens the figure to hold them."""
     import numpy as np
     x = np.arange(len(groups))
     width = 0.8 / max(1, len(series))
-    fig, ax = plt.subplots(figsize=(7, 4.2))
+    fig, ax = plt.subplots(figsize=(max(7, 0.9 * len(groups) + 2) if rotation else 7, 4.2))
     for i, (label, vals) in enumerate(series.items()):
         v = [np.nan if a is None else a for a in vals]
         bars = ax.bar(x - 0.4 + width * (i + 0.5), v, width, label=label)
         for b, a in zip(bars, vals):
             if a is not None:
                 ax.annotate("%.3g" % a, (b.get_x() + b.get_width() / 2, a), ha="center", va="bottom", fontsize=7)
-    ax.set_xticks(x, groups)
+    ax.set_xticks(x, groups, **({"rotation": rotation, "ha": "right", "fontsize": 8} if rotation else {}))
     ax.set_yscale("log")
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)

@@ -10,9 +10,9 @@ A section is a module with
 The report writes each heading, then calls render.
 """
 
-from . import (asymmetry, authors, baseline, compiler, correctness, exact_test, float_double, gallery, header,
-               hunt, moller97, papers, provenance, sabharwal15, scenes, scorecard, speed_error, stability, summary, time_ratio, tropp06,
-               unquoted, yuhe13)
+from . import (asymmetry, authors, baseline, compiler, correctness, exact_test, float_double, float_speed, gallery,
+               header, hunt, moller97, papers, provenance, sabharwal15, scenes, scorecard, shen03, speed_error,
+               stability, summary, time_ratio, tropp06, unquoted, yuhe13)
 
 SECTIONS = [
     header,
@@ -31,9 +31,11 @@ SECTIONS = [
     papers,
     moller97,
     tropp06,
+    shen03,
     sabharwal15,
     yuhe13,
     unquoted,
+    float_speed,
     authors,
     scenes,
     gallery,

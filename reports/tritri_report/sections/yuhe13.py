@@ -3,7 +3,7 @@ it) and section 7.1 (the singular configurations, all handled correctly)."""
 
 from .. import data
 from ..markdown import NOT_MEASURED, count, ns, table
-from . import papers
+from . import papers, setups
 
 TITLE = "Yu & He 2013, Table 1 and the singular suite"
 LEVEL, NUMBERED = papers.SUBSECTION
@@ -35,11 +35,30 @@ def table1(run, part, t1):
         rows.append([ours, "-", "-", ns(t) + " ns" if t else "-", "-", "%.1f M" % (1e3 / t) if t else "-"])
         verdict = ("the stages are %s (no `stage:` benchmarks for %s in bench.json), so the transform's "
                    "share cannot be compared" % (NOT_MEASURED, t1["algorithm"]))
+    rows += forty_pairs(run, t1)
     part.add(table(["machine", "transform alone", "test in the frame", "both", "transform share",
                     "pairs per second (both)"], rows))
     part.add("Transform share: %s. Pairs per second differ by the machines' age (2008 laptop and desktop "
              "against this one) and by our pools of distinct pairs against their 40 pairs repeated 10⁶ times, "
              "which stay in cache and train the branch predictor; only the share is comparable.\n" % verdict)
+
+
+# The paper's own set-up (setups.py): its 40 pairs repeated, in order and shuffled.
+FORTY = (("paper:yuhe13", "ours, the paper's 40 pairs repeated (paper:yuhe13)"),
+         ("paper:yuhe13/shuffled", "ours, the 40 pairs shuffled (paper:yuhe13/shuffled)"))
+
+
+def forty_pairs(run, t1):
+    """Table 1's rows on the driver's pools of papers-bench.json, where it was run."""
+    bench = setups.papers_bench(run)
+    rows = []
+    names = t1["stages"]
+    for w, label in FORTY if bench else ():
+        t = {k: setups.ns_of(bench, t1["algorithm"], w, names[k]) for k in ("transform", "frame", "both")}
+        if t["transform"] and t["both"]:
+            rows.append([label, ns(t["transform"]) + " ns", ns(t["frame"]) + " ns", ns(t["both"]) + " ns",
+                         "%.1f%%" % (100 * t["transform"] / t["both"]), "%.1f M" % (1e3 / t["both"])])
+    return rows
 
 
 def share_verdict(share, published_share, machines):
