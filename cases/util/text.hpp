@@ -18,6 +18,18 @@ inline std::string hex64(std::uint64_t x) {
   return buf;
 }
 
+// A positive count written in at most `max_digits` decimal digits ("4096"); 0 for anything else
+// (empty, a sign, a letter, too many digits), which every caller reports as its own usage error.
+inline std::size_t positive_count(std::string_view text, std::size_t max_digits) {
+  if (text.empty() || text.size() > max_digits) return 0;
+  std::size_t n = 0;
+  for (char c : text) {
+    if (c < '0' || c > '9') return 0;
+    n = n * 10 + static_cast<std::size_t>(c - '0');
+  }
+  return n;
+}
+
 // Fields of `text` split at `separator`, empty fields kept: "a\t\tb" is {"a", "", "b"}.
 inline std::vector<std::string_view> split_fields(std::string_view text, char separator) {
   std::vector<std::string_view> fields;

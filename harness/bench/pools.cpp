@@ -98,4 +98,15 @@ std::uint64_t hash_pools(const std::vector<const Pool*>& pools) {
   return h;
 }
 
+Pool pool_of_rows(std::string workload, std::string value, std::uint64_t seed, const std::vector<TrianglePair>& pairs,
+                  const std::vector<Truth>& truth, const std::vector<std::size_t>& rows) {
+  Pool p{std::move(workload), std::move(value), seed, {}, {}};
+  for (std::size_t r : rows)
+    if (!truth[r].degenerate) {
+      p.pairs.push_back(pairs[r]);
+      p.truth.push_back(truth[r]);
+    }
+  return p;
+}
+
 }  // namespace tritri::bench

@@ -66,6 +66,11 @@ std::vector<Candidate> draw(std::size_t count, Rng& rng, const std::function<Tri
 // A pool of the candidates, shuffled once with `seed`.
 Pool make_pool(std::string workload, std::string value, std::uint64_t seed, std::vector<Candidate> candidates);
 
+// A pool of the labelled `pairs` at `rows`, in that order, leaving out the degenerate ones (a
+// scene's candidates and a paper's driver come labelled as a whole, and are timed in their order).
+Pool pool_of_rows(std::string workload, std::string value, std::uint64_t seed, const std::vector<TrianglePair>& pairs,
+                  const std::vector<Truth>& truth, const std::vector<std::size_t>& rows);
+
 // 64-bit FNV-1a over the bytes of every pair of every pool, in order: the "corpus hash".
 std::uint64_t hash_pools(const std::vector<const Pool*>& pools);
 

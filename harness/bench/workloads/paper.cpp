@@ -1,6 +1,7 @@
 #include "harness/bench/workloads/paper.hpp"
 
 #include "harness/bench/workloads/ratio.hpp"
+#include "cases/util/text.hpp"
 #include "cases/util/progress.hpp"
 
 #include <algorithm>
@@ -27,9 +28,7 @@ const Driver& driver_of(const std::string& name) {
 }
 
 std::size_t parse_count(const std::string& text) {
-  const bool digits = !text.empty() && text.size() <= 8 &&
-                      std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-  const std::size_t n = digits ? std::stoul(text) : 0;
+  const std::size_t n = positive_count(text, 8);
   if (n == 0) throw std::invalid_argument("paper: n:'" + text + "' is not a number of pairs from 1 to 99999999");
   return n;
 }
@@ -46,7 +45,6 @@ Pool labelled_pool(const std::string& value, std::uint64_t seed, const std::vect
   Progress progress("paper:" + value + ": labelling by the oracle", pairs.size());
   const std::vector<Truth> truth = label_pairs(pairs, progress.callback());
   progress.finish();
-  Pool p{"paper", value, seed, {}, {}};
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < pairs.size(); ++i)
     if (!truth[i].degenerate) order.push_back(i);
@@ -54,11 +52,7 @@ Pool labelled_pool(const std::string& value, std::uint64_t seed, const std::vect
     Rng rng(seed);
     rng.shuffle(order);
   }
-  for (std::size_t i : order) {
-    p.pairs.push_back(pairs[i]);
-    p.truth.push_back(truth[i]);
-  }
-  return p;
+  return pool_of_rows("paper", value, seed, pairs, truth, order);
 }
 
 class PaperWorkload : public Workload {

@@ -43,18 +43,6 @@ std::string fixed3(double x) {
   return b;
 }
 
-// The pool of `rows` of the stream, labelled; pairs the oracle finds degenerate are left out.
-Pool labelled(const std::string& workload, const std::string& value, std::uint64_t seed,
-              const std::vector<TrianglePair>& pairs, const std::vector<Truth>& truth, const std::vector<std::size_t>& rows) {
-  Pool p{workload, value, seed, {}, {}};
-  for (std::size_t r : rows)
-    if (truth[r].relation != Relation::degenerate) {
-      p.pairs.push_back(pairs[r]);
-      p.truth.push_back(truth[r]);
-    }
-  return p;
-}
-
 class SceneWorkload : public Workload {
  public:
   SceneWorkload() : Workload("scene", "scene[:NAME[/bv:TYPE]]") {}
@@ -153,7 +141,7 @@ class SceneWorkload : public Workload {
       }
     }
     const std::uint64_t seed = sub_seed(input.pool.seed, "scene:" + value);
-    Pool ordered = labelled("scene", value, seed, pairs, truth, all);
+    Pool ordered = pool_of_rows("scene", value, seed, pairs, truth, all);
     Pool shuffled = ordered;
     shuffled.workload = "scene-shuffled";
     Rng rng(seed);
@@ -169,7 +157,7 @@ class SceneWorkload : public Workload {
     built.pools.push_back(std::move(ordered));
     built.pools.push_back(std::move(shuffled));
     if (!s.self) {
-      Pool first = labelled("scene-any", value, seed, pairs, truth, any);
+      Pool first = pool_of_rows("scene-any", value, seed, pairs, truth, any);
       if (!first.pairs.empty()) built.pools.push_back(std::move(first));
     }
   }

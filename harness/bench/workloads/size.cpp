@@ -9,6 +9,7 @@
 //             the million-pair pool takes a while. --pool does not apply.
 #include "harness/bench/workload.hpp"
 #include "harness/bench/workloads/ratio.hpp"
+#include "cases/util/text.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -17,9 +18,7 @@ namespace tritri::bench {
 namespace {
 
 std::size_t parse_size(const std::string& value) {
-  const bool digits = !value.empty() && value.size() <= 9 &&
-                      std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
-  const std::size_t n = digits ? std::stoul(value) : 0;
+  const std::size_t n = positive_count(value, 9);
   if (n == 0) throw std::invalid_argument("size '" + value + "' is not a number of pairs from 1 to 999999999");
   return n;
 }
