@@ -1,0 +1,167 @@
+// One pair per call (exact.hpp's `overlap` / `relation`): the batch kernel's first pass for one
+// pair, in Guigue–Devillers' order with their early exits, then the exact scalar classification
+// (scalar.hpp) for whatever is left.
+//
+//   filter    one semi-static bound B for the pair (the extents of its six points, as the
+//             kernel's pair_bound; algorithms/exact/README.md, "Shared bounds"), then
+//             step 1: T1's signs against π2; all certain and equal -> disjoint (overlap level);
+//             step 2: T2's against π1, likewise; the relation level answers one-sided pairs
+//             only with both triangles certainly proper and the planes certainly not parallel;
+//             step 3: six certain signs -> the canonical order by table look-ups, G1 and G2;
+//             G1 > B or G2 > B -> disjoint, both < -B -> they meet (`cross`).
+// Each exit is proved in algorithms/exact/README.md, "One pair per call".
+#pragma once
+
+#include "algorithms/exact/detail/scalar.hpp"
+
+#include <cstring>
+
+namespace tritri::exact::detail {
+
+// The signed distances the filter computed and the bound they share.
+struct PairSigns {
+  double bound;
+  double s1[3];  // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
+  double s2[3];  // T2's vertices against π1
+};
+
+// (x_k - a)·((b - a)×(c - a)) for the three vertices x_k at `pts` and the plane of a b c at `pl`,
+// evaluated as det3_eval evaluates o3 (the kernel's plane_distances, one pair).
+inline void plane_values(const double* pl, const double* pts, double s[3]) {
+  const double ux = pl[3] - pl[0], uy = pl[4] - pl[1], uz = pl[5] - pl[2];
+  const double vx = pl[6] - pl[0], vy = pl[7] - pl[1], vz = pl[8] - pl[2];
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  for (int k = 0; k < 3; ++k) {
+    const double* x = pts + 3 * k;
+    s[k] = ((x[0] - pl[0]) * nx + (x[1] - pl[1]) * ny) + (x[2] - pl[2]) * nz;
+  }
+}
+
+// Two doubles in one SSE2 / NEON register (GCC vector extension): x and y of a point.
+using Double2 = double __attribute__((vector_size(16)));
+
+// The kernel's B for one pair (pair_bound3's value), +inf unless every extent is at most kMax3.
+// Minima and maxima by `<` / `>` (an unordered comparison keeps the running value): an infinite
+// coordinate leaves its axis' minimum at -inf or maximum at +inf, or both NaN (a NaN first
+// coordinate), so the extent is +inf or NaN and B = +inf; a NaN coordinate met later is skipped,
+// but makes every value it enters NaN. Either way no comparison with B below is true.
+inline double one_pair_bound(const double* c) {
+  Double2 lo, hi;
+  std::memcpy(&lo, c, sizeof lo);
+  hi = lo;
+  double lo_z = c[2], hi_z = c[2];
+  for (int v = 1; v < 6; ++v) {
+    Double2 p;
+    std::memcpy(&p, c + 3 * v, sizeof p);
+    lo = p < lo ? p : lo;
+    hi = p > hi ? p : hi;
+    lo_z = c[3 * v + 2] < lo_z ? c[3 * v + 2] : lo_z;
+    hi_z = c[3 * v + 2] > hi_z ? c[3 * v + 2] : hi_z;
+  }
+  const Double2 e = hi - lo;
+  const double ex = e[0], ey = e[1], ez = hi_z - lo_z;
+  if (!(ex <= bound::kMax3 && ey <= bound::kMax3 && ez <= bound::kMax3)) return __builtin_inf();
+  return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
+}
+
+// Bits of the certainly positive (pos) and certainly negative (neg) values among three.
+inline unsigned above(const double s[3], double b) { return (s[0] > b) | (s[1] > b) << 1 | (s[2] > b) << 2; }
+inline unsigned below(const double s[3], double b) { return (s[0] < -b) | (s[1] < -b) << 1 | (s[2] < -b) << 2; }
+
+// The planes are certainly not parallel: two distances to one plane differ by more than 3B.
+inline bool certainly_slanted(const double s[3], double b) {
+  return (std::fabs(s[1] - s[0]) > 3.0 * b) | (std::fabs(s[2] - s[0]) > 3.0 * b);
+}
+
+// Guigue–Devillers' G1 = [p1,q1,p2,q2] and G2 = [p1,r1,r2,p2] on six certain non-zero signs,
+// `pos1` / `pos2` the bits of the positive ones (each in 1..6): the lone vertex is the one whose
+// sign differs from the other two, and a triangle's flip (its lone vertex negative) swaps q and r
+// of the other, as in classify.hpp's `crossing`. Evaluated as the kernel's gd_determinants.
+[[gnu::always_inline]] inline void gd_values(const double* c, unsigned pos1, unsigned pos2, double& g1, double& g2) {
+  // vertex offsets (p, q, r) with the lone vertex first, per sign pattern; and the flip
+  static constexpr unsigned char kOrder[8][3] = {{0, 3, 6}, {0, 3, 6}, {3, 6, 0}, {6, 0, 3},
+                                                 {6, 0, 3}, {3, 6, 0}, {0, 3, 6}, {0, 3, 6}};
+  static constexpr bool kFlip[8] = {false, false, false, true, false, true, true, true};
+  const unsigned char* o1 = kOrder[pos1];
+  const unsigned char* o2 = kOrder[pos2];
+  const double* p1 = c + o1[0];
+  const double* p2 = c + 9 + o2[0];
+  const double* q1 = c + o1[kFlip[pos2] ? 2 : 1];
+  const double* r1 = c + o1[kFlip[pos2] ? 1 : 2];
+  const double* q2 = c + 9 + o2[kFlip[pos1] ? 2 : 1];
+  const double* r2 = c + 9 + o2[kFlip[pos1] ? 1 : 2];
+  const double dx = p2[0] - p1[0], dy = p2[1] - p1[1], dz = p2[2] - p1[2];
+  const double ex = q1[0] - p1[0], ey = q1[1] - p1[1], ez = q1[2] - p1[2];
+  g1 = ((q2[0] - p1[0]) * (ey * dz - ez * dy) + (q2[1] - p1[1]) * (ez * dx - ex * dz)) +
+       (q2[2] - p1[2]) * (ex * dy - ey * dx);
+  const double gx = r1[0] - p1[0], gy = r1[1] - p1[1], gz = r1[2] - p1[2];
+  const double hx = r2[0] - p1[0], hy = r2[1] - p1[1], hz = r2[2] - p1[2];
+  g2 = (dx * (gy * hz - gz * hy) + dy * (gz * hx - gx * hz)) + dz * (gx * hy - gy * hx);
+}
+
+// 1: they meet (relation: `cross`); 0: disjoint; -1: undecided (then `ps` holds both triangles'
+// values and the bound).
+template <bool kRelation>
+[[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
+  const double b = one_pair_bound(c);
+  ps.bound = b;
+  plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
+  const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
+  if constexpr (!kRelation)
+    if ((pos1 == 7u) | (neg1 == 7u)) return 0;
+  plane_values(c, c + 9, ps.s2);  // step 2: T2 against π1
+  const unsigned pos2 = above(ps.s2, b), neg2 = below(ps.s2, b);
+  if constexpr (!kRelation) {
+    if ((pos2 == 7u) | (neg2 == 7u)) return 0;
+  } else if ((pos1 == 7u) | (neg1 == 7u) | (pos2 == 7u) | (neg2 == 7u)) {
+    // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
+    // proves its triangle proper) and the planes certainly not parallel; else undecided
+    const bool proper = ((pos1 | neg1) != 0u) & ((pos2 | neg2) != 0u);
+    return proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b)) ? 0 : -1;
+  }
+  if (((pos1 | neg1) != 7u) | ((pos2 | neg2) != 7u)) return -1;  // a sign within the bound
+  double g1, g2;
+  gd_values(c, pos1, pos2, g1, g2);  // step 3
+  if ((g1 > b) | (g2 > b)) return 0;
+  return (g1 < -b) & (g2 < -b) ? 1 : -1;
+}
+
+// After an undecided filter: the classification (`grid`: the pair is known to
+// pass grid_exact, so plain double is exact for it). At the overlap level only the emptiness of
+// the answer counts (classify.hpp).
+template <bool kRelation>
+RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
+  static_cast<void>(ps);
+  if (!grid) return solve<kRelation>(pair, route);
+  if (route) *route = Route::grid;
+  Tri t1, t2;
+  double unused[18];
+  gather(pair, t1, t2, unused);
+  return classify<Plain, kRelation>(t1, t2);
+}
+
+// One pair: the filter, then `finish`.
+template <bool kRelation>
+RelationAnswer decide(const TrianglePair& pair, bool grid, Route* route) {
+  PairSigns ps;
+  const int r = filter_pair<kRelation>(pair.t1[0].data(), ps);
+  if (r < 0) return finish<kRelation>(pair, ps, grid, route);
+  if (route) *route = Route::filter;
+  return answer_with(r ? Relation::cross : Relation::disjoint);
+}
+
+inline Overlap to_overlap(const RelationAnswer& a) {
+  if (a.relation == Relation::unsupported) return Overlap::unsupported;
+  return meets(a) ? Overlap::yes : Overlap::no;
+}
+
+inline Overlap overlap_one_pair(const TrianglePair& pair) {
+  PairSigns ps;
+  const int r = filter_pair<false>(pair.t1[0].data(), ps);
+  if (r >= 0) return static_cast<Overlap>(r);
+  return to_overlap(finish<false>(pair, ps, false, nullptr));
+}
+
+inline RelationAnswer relation_one_pair(const TrianglePair& pair) { return decide<true>(pair, false, nullptr); }
+
+}  // namespace tritri::exact::detail
