@@ -76,6 +76,7 @@ struct Stats {
   std::uint64_t pending = 0;   // of which left undecided by the first SIMD pass (or in its tail)
   std::uint64_t scalar = 0;    // of those, left undecided by the second (grid) SIMD pass too
   std::uint64_t filter = 0;    // of those, decided by the one-pair filter (pairs that skipped SIMD)
+  std::uint64_t shared = 0;    // decided by the shared-vertex and shared-edge shortcuts
   std::uint64_t grid = 0;      // decided with plain double on an integer grid
   std::uint64_t filtered = 0;  // decided with filtered predicates (+ exact engines when needed)
   std::uint64_t declined = 0;  // non-finite input
@@ -110,6 +111,7 @@ __attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, c
     if constexpr (kRelation) out[j] = a;
     else out[j] = to_overlap(a);
     st.filter += route == Route::filter;
+    st.shared += route == Route::shared;
     st.grid += route == Route::grid;
     st.filtered += route == Route::filtered;
     st.declined += route == Route::declined;

@@ -1,6 +1,6 @@
 // One pair per call (exact.hpp's `overlap` / `relation`): the batch kernel's first pass for one
-// pair, in Guigue–Devillers' order with their early exits, then the exact scalar classification
-// (scalar.hpp) for whatever is left.
+// pair, in Guigue–Devillers' order with their early exits, then the shared-vertex and shared-edge
+// shortcuts, then the exact scalar classification (scalar.hpp) for whatever is left.
 //
 //   filter    one semi-static bound B for the pair (the extents of its six points, as the
 //             kernel's pair_bound; algorithms/exact/README.md, "Shared bounds"), then
@@ -9,7 +9,10 @@
 //             only with both triangles certainly proper and the planes certainly not parallel;
 //             step 3: six certain signs -> the canonical order by table look-ups, G1 and G2;
 //             G1 > B or G2 > B -> disjoint, both < -B -> they meet (`cross`).
-// Each exit is proved in algorithms/exact/README.md, "One pair per call".
+//   shared    exact coordinate equality of vertices (finite input only): at the overlap level a
+//             shared vertex is a common point; at the relation level the filter's signs decide a
+//             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
+// Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call".
 #pragma once
 
 #include "algorithms/exact/detail/scalar.hpp"
@@ -126,12 +129,64 @@ template <bool kRelation>
   return (g1 < -b) & (g2 < -b) ? 1 : -1;
 }
 
-// After an undecided filter: the classification (`grid`: the pair is known to
+// All 18 coordinates finite: x - x is 0 for finite x and NaN otherwise.
+inline bool finite18(const double* c) {
+  double z = 0.0;
+  for (int i = 0; i < 18; ++i) z += c[i] - c[i];
+  return z == 0.0;
+}
+
+// Bit 3i + j: T1's vertex i equals T2's vertex j (exact comparison of the coordinates).
+inline unsigned shared_vertices(const double* c) {
+  unsigned bits = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double* a = c + 3 * i;
+      const double* d = c + 9 + 3 * j;
+      bits |= static_cast<unsigned>((a[0] == d[0]) & (a[1] == d[1]) & (a[2] == d[2])) << (3 * i + j);
+    }
+  return bits;
+}
+
+// The sign of a filter value when certain, else 0.
+inline int certain_sign(double s, double b) { return (s > b) - (s < -b); }
+
+// The relation of finite triangles with shared vertices (`bits` non-zero, from shared_vertices)
+// when the filter's certain signs decide it; Relation::unsupported otherwise (undecided).
+inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
+  int s1[3], s2[3];
+  for (int k = 0; k < 3; ++k) s1[k] = certain_sign(ps.s1[k], ps.bound), s2[k] = certain_sign(ps.s2[k], ps.bound);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (!((bits >> (3 * i + j)) & 1u)) continue;
+      const int a = (i + 1) % 3, b = (i + 2) % 3, c = (j + 1) % 3, d = (j + 2) % 3;
+      // shared vertex: the other two of one triangle strictly on one side of the other's plane,
+      // and a certain non-zero sign against each plane (both triangles proper)
+      if ((s1[a] * s1[b] > 0 && (s2[c] | s2[d]) != 0) || (s2[c] * s2[d] > 0 && (s1[a] | s1[b]) != 0))
+        return Relation::touch_point;
+      // shared edge: T1's vertex a (or b) also equals one of T2's other two, and T1's third
+      // vertex is certainly off π2
+      const unsigned other = (bits >> (3 * a)) & ((1u << c) | (1u << d));
+      if (other && s1[b] != 0) return Relation::touch_segment;
+      const unsigned other_b = (bits >> (3 * b)) & ((1u << c) | (1u << d));
+      if (other_b && s1[a] != 0) return Relation::touch_segment;
+    }
+  return Relation::unsupported;
+}
+
+// After an undecided filter: the shortcuts, then the classification (`grid`: the pair is known to
 // pass grid_exact, so plain double is exact for it). At the overlap level only the emptiness of
 // the answer counts (classify.hpp).
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
-  static_cast<void>(ps);
+  const double* c = pair.t1[0].data();
+  if (const unsigned bits = shared_vertices(c); bits != 0u && finite18(c)) {
+    const Relation rel = kRelation ? shared_relation(bits, ps) : Relation::touch_point;  // a common point
+    if (rel != Relation::unsupported) {
+      if (route) *route = Route::shared;
+      return answer_with(rel);
+    }
+  }
   if (!grid) return solve<kRelation>(pair, route);
   if (route) *route = Route::grid;
   Tri t1, t2;

@@ -7,9 +7,9 @@
 
 namespace tritri::exact::detail {
 
-// What decided a pair in the scalar path (for the statistics): the one-pair filter
-// (one_pair.hpp) or the classification with a predicate policy.
-enum class Route : std::uint8_t { filter, grid, filtered, declined };
+// What decided a pair in the scalar path (for the statistics): the one-pair filter, the
+// shared-vertex shortcuts (one_pair.hpp), or the classification with a predicate policy.
+enum class Route : std::uint8_t { filter, shared, grid, filtered, declined };
 
 inline void gather(const TrianglePair& pair, Tri& t1, Tri& t2, double (&c)[18]) {
   for (int i = 0; i < 3; ++i) {

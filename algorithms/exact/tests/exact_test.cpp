@@ -661,15 +661,30 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
     s = run_overlap(isa, coplanar);
     EXPECT_EQ(s.pending, 4096u);
     EXPECT_LT(s.scalar, 4096u / 5) << "the degenerate and touching ones only";
-    // 3. touching on the grid (shared vertex): the scalar classification with plain double
+    // 3. a shared vertex: the shortcut (no orientation at the overlap level), in lanes and scalar
     std::vector<TrianglePair> touching;
     for (int i = 0; i < 2048; ++i) {
       TrianglePair p = small_int_pair(r, 6);
       p.t2[0] = p.t1[0];
       touching.push_back(p);
     }
-    s = run_overlap(isa, touching);
-    EXPECT_GT(s.grid, 1500u);
+    s = run_overlap(isa, touching);  // in lanes, by the second pass
+    EXPECT_EQ(s.pending, 2048u);
+    EXPECT_EQ(s.scalar, 0u);
+    s = run_overlap(ex::Isa::scalar, touching);  // in the scalar pass
+    EXPECT_GT(s.shared, 1500u);
+    EXPECT_EQ(s.grid + s.filtered, 0u);
+    //    touching on the grid without a shared vertex (on an edge's midpoint): the scalar
+    //    classification with plain double
+    std::vector<TrianglePair> on_edge;
+    for (int i = 0; i < 2048; ++i) {
+      TrianglePair p = small_int_pair(r, 6);
+      p.t2[0] = (p.t1[0] + p.t1[1]) * 0.5;
+      on_edge.push_back(p);
+    }
+    s = run_overlap(isa, on_edge);
+    EXPECT_GT(s.grid, 1000u);
+    EXPECT_EQ(s.grid, s.scalar) << s.pending;
     // 4. filter uncertain off the grid -> exact engines (fast path and wide path)
     std::vector<TrianglePair> near;
     for (int i = 0; i < 2048; ++i) near.push_back(near_flat(r, 0, static_cast<int>(r.integer(0, 4))));
@@ -682,6 +697,7 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
     EXPECT_GT(ex::intexact::counts().wide3 + ex::intexact::counts().wide2, 0u);
     expect_all_paths_agree(coplanar, "coplanar");
     expect_all_paths_agree(touching, "touching");
+    expect_all_paths_agree(on_edge, "on an edge");
     expect_all_paths_agree(std::vector<TrianglePair>(near.begin(), near.begin() + 512), "near");
     expect_all_paths_agree(std::vector<TrianglePair>(wide.begin(), wide.begin() + 512), "wide");
   }
