@@ -661,6 +661,20 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
     s = run_overlap(isa, coplanar);
     EXPECT_EQ(s.pending, 4096u);
     EXPECT_LT(s.scalar, 4096u / 5) << "the degenerate and touching ones only";
+    //    exactly coplanar off the grid, on an axis-parallel plane (any axis): decided in 2-D by
+    //    the second pass unless an orientation is within its bound
+    std::vector<TrianglePair> flat;
+    for (int i = 0; i < 4096; ++i) {
+      TrianglePair p = random_pair(r);
+      const int k = i % 3;
+      const double level = r.uniform();
+      for (auto* t : {&p.t1, &p.t2})
+        for (auto& v : t->v) v[k] = level;
+      flat.push_back(p);
+    }
+    s = run_overlap(isa, flat);
+    EXPECT_EQ(s.pending, 4096u);
+    EXPECT_LT(s.scalar, 4096u / 50) << "only values within the det2 bound";
     // 3. a shared vertex: the shortcut (no orientation at the overlap level), in lanes and scalar
     std::vector<TrianglePair> touching;
     for (int i = 0; i < 2048; ++i) {
@@ -698,6 +712,7 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
     expect_all_paths_agree(coplanar, "coplanar");
     expect_all_paths_agree(touching, "touching");
     expect_all_paths_agree(on_edge, "on an edge");
+    expect_all_paths_agree(std::vector<TrianglePair>(flat.begin(), flat.begin() + 1024), "flat");
     expect_all_paths_agree(std::vector<TrianglePair>(near.begin(), near.begin() + 512), "near");
     expect_all_paths_agree(std::vector<TrianglePair>(wide.begin(), wide.begin() + 512), "wide");
   }
