@@ -17,6 +17,7 @@
 
 #include "algorithms/exact/detail/scalar.hpp"
 
+#include <cstdint>
 #include <cstring>
 
 namespace tritri::exact::detail {
@@ -174,6 +175,24 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   return Relation::unsupported;
 }
 
+// The kernel's grid test (grid_lanes) for one pair: max|coordinate| m in [2^-344, 2^300) and every
+// coordinate x a multiple of 2^q, q = e - 14 for 2^e <= m < 2^(e+1): fl(fl(x + C) - C) = x with
+// C = 1.5·2^(q+52) built from m's exponent bits (algorithms/exact/README.md, "The grid case (pass 2
+// and `Plain`)"). Then every value the filter computed is exact.
+inline bool on_grid(const double* c) {
+  double m = 0.0;
+  for (int i = 0; i < 18; ++i) m = dmax(m, std::fabs(c[i]));
+  if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
+  std::uint64_t bits;
+  std::memcpy(&bits, &m, sizeof bits);
+  bits = ((bits & 0x7ff0000000000000ull) + (38ull << 52)) | (1ull << 51);
+  double big;
+  std::memcpy(&big, &bits, sizeof big);
+  bool grid = true;
+  for (int i = 0; i < 18; ++i) grid &= (c[i] + big) - big == c[i];
+  return grid;
+}
+
 // After an undecided filter: the shortcuts, then the classification (`grid`: the pair is known to
 // pass grid_exact, so plain double is exact for it). At the overlap level only the emptiness of
 // the answer counts (classify.hpp).
@@ -187,12 +206,14 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
       return answer_with(rel);
     }
   }
-  if (!grid) return solve<kRelation>(pair, route);
+  if (!grid && !on_grid(c)) return solve<kRelation>(pair, route);
   if (route) *route = Route::grid;
   Tri t1, t2;
   double unused[18];
   gather(pair, t1, t2, unused);
-  return classify<Plain, kRelation>(t1, t2);
+  // on the grid the filter's values are exact: their signs are the plane signs
+  const int known[6] = {sgn(ps.s1[0]), sgn(ps.s1[1]), sgn(ps.s1[2]), sgn(ps.s2[0]), sgn(ps.s2[1]), sgn(ps.s2[2])};
+  return classify<Plain, kRelation>(t1, t2, known);
 }
 
 // One pair: the filter, then `finish`.
