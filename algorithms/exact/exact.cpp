@@ -22,7 +22,8 @@ CounterList path_counts() {
   const exact::Stats& s = exact::stats();
   const exact::Isa isa = kSimd ? exact::active_isa() : exact::Isa::scalar;
   return {{"pairs", s.pairs}, {"undecided_by_simd", s.pending}, {"to_scalar", s.scalar},
-          {"grid", s.grid},   {"filtered", s.filtered},         {"declined", s.declined},
+          {"filter", s.filter}, {"shared", s.shared},          {"grid", s.grid},
+          {"filtered", s.filtered}, {"declined", s.declined},
           {std::string("isa:") + exact::to_string(isa), 1}};
 }
 
@@ -42,7 +43,8 @@ void register_exact(Registry& registry) {
   simd.counters = {&exact::reset_stats, &path_counts<true>};
   registry.add(std::move(simd));
   Algorithm scalar = variant(paper, "exact-scalar",
-      "the same answers from the scalar path alone: every pair through the filtered exact classification");
+      "the same answers from the scalar path alone: every pair through the one-pair filter, then the exact "
+      "classification");
   // The one-pair API is the scalar path already: both entries share it.
   add_level<Level::overlap>(scalar, &overlap_scalar_batch, &exact::overlap);
   add_level<Level::relation>(scalar, &relation_scalar_batch, &exact::relation);

@@ -14,6 +14,8 @@
 //              (classify.hpp) with plain double predicates when the pair lies on a small
 //              integer grid (exact there), otherwise with filtered predicates that fall back to
 //              the integer engine (intexact.hpp).
+//   One pair overlap / relation: the same first pass for one pair in Guigue–Devillers' order with
+//              their early exits (one_pair.hpp), then the same exact scalar classification.
 //   No allocation per pair, no virtual calls; the only indirect choice is the ISA, once per
 //   batch chunk.
 //
@@ -21,7 +23,7 @@
 // Compile with -ffp-contract=off as tritri does (the bounds hold either way; algorithms/exact/README.md).
 #pragma once
 
-#include "algorithms/exact/detail/scalar.hpp"
+#include "algorithms/exact/detail/one_pair.hpp"
 #include "algorithms/exact/detail/simd.hpp"
 #include "tritri/answers.hpp"
 #include "tritri/isa.hpp"
@@ -73,7 +75,9 @@ struct Stats {
   std::uint64_t pairs = 0;     // pairs given to a batch entry point
   std::uint64_t pending = 0;   // of which left undecided by the first SIMD pass (or in its tail)
   std::uint64_t scalar = 0;    // of those, left undecided by the second (grid) SIMD pass too
-  std::uint64_t grid = 0;      // of those, decided with plain double on an integer grid
+  std::uint64_t filter = 0;    // of those, decided by the one-pair filter (pairs that skipped SIMD)
+  std::uint64_t shared = 0;    // decided by the shared-vertex and shared-edge shortcuts
+  std::uint64_t grid = 0;      // decided with plain double on an integer grid
   std::uint64_t filtered = 0;  // decided with filtered predicates (+ exact engines when needed)
   std::uint64_t declined = 0;  // non-finite input
 };
@@ -88,8 +92,8 @@ inline void reset_stats() {
 
 // ---- one pair ----
 
-inline Overlap overlap(const TrianglePair& pair) { return detail::overlap_scalar(pair); }
-inline RelationAnswer relation(const TrianglePair& pair) { return detail::relation_scalar(pair); }
+inline Overlap overlap(const TrianglePair& pair) { return detail::overlap_one_pair(pair); }
+inline RelationAnswer relation(const TrianglePair& pair) { return detail::relation_one_pair(pair); }
 
 namespace detail {
 
@@ -103,18 +107,11 @@ __attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, c
   for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t j = pending[k] & ~kGridFlag;
     Route route = Route::filtered;
-    if (pending[k] & kGridFlag) {  // on the grid (hence finite): plain double is exact
-      route = Route::grid;
-      Tri t1, t2;
-      for (int i = 0; i < 3; ++i) t1.v[i] = pairs[j].t1[i].data(), t2.v[i] = pairs[j].t2[i].data();
-      const RelationAnswer a = classify<Plain, kRelation>(t1, t2);
-      if constexpr (kRelation) out[j] = a;
-      else out[j] = meets(a) ? Overlap::yes : Overlap::no;
-    } else if constexpr (kRelation) {
-      out[j] = relation_scalar(pairs[j], &route);
-    } else {
-      out[j] = overlap_scalar(pairs[j], &route);
-    }
+    const RelationAnswer a = decide<kRelation>(pairs[j], (pending[k] & kGridFlag) != 0u, &route);
+    if constexpr (kRelation) out[j] = a;
+    else out[j] = to_overlap(a);
+    st.filter += route == Route::filter;
+    st.shared += route == Route::shared;
     st.grid += route == Route::grid;
     st.filtered += route == Route::filtered;
     st.declined += route == Route::declined;

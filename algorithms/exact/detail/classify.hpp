@@ -318,9 +318,10 @@ Relation crossing(const Tri& t1, const Tri& t2, const int s1[3], const int s2[3]
 
 // Degenerate input gives {degenerate, dimension}; otherwise the relation of the oracle. With
 // kRelation false only meet/no-meet is exact (the relation returned is some relation with the
-// right emptiness).
+// right emptiness). `known`: T1's and T2's exact plane signs (s1 then s2) when the caller has
+// them (one_pair.hpp, on the grid), else null.
 template <class Pr, bool kRelation>
-RelationAnswer classify(const Tri& t1, const Tri& t2) {
+RelationAnswer classify(const Tri& t1, const Tri& t2, const int* known = nullptr) {
   int n1[3], n2[3];
   const bool proper1 = normal_signs<Pr>(t1, n1);
   const bool proper2 = normal_signs<Pr>(t2, n2);
@@ -330,7 +331,11 @@ RelationAnswer classify(const Tri& t1, const Tri& t2) {
     return {Relation::degenerate, shapes_meet<Pr>(a, b)};
   }
   int s1[3], s2[3];
-  plane_signs<Pr>(t1, t2, s1, s2);
+  if (known) {
+    for (int k = 0; k < 3; ++k) s1[k] = known[k], s2[k] = known[3 + k];
+  } else {
+    plane_signs<Pr>(t1, t2, s1, s2);
+  }
   if (one_sided(s1) || one_sided(s2)) {
     if (!kRelation) return answer_with(Relation::disjoint);
     const bool parallel = Pr::d3(t2.v[0], t2.v[1], t2.v[0], t2.v[2], t1.v[0], t1.v[1]) == 0 &&

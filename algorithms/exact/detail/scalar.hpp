@@ -7,8 +7,9 @@
 
 namespace tritri::exact::detail {
 
-// Which predicate policy decided a pair in the scalar path (for the statistics).
-enum class Route : std::uint8_t { grid, filtered, declined };
+// What decided a pair in the scalar path (for the statistics): the one-pair filter, the
+// shared-vertex shortcuts (one_pair.hpp), or the classification with a predicate policy.
+enum class Route : std::uint8_t { filter, shared, grid, filtered, declined };
 
 inline void gather(const TrianglePair& pair, Tri& t1, Tri& t2, double (&c)[18]) {
   for (int i = 0; i < 3; ++i) {
@@ -38,14 +39,5 @@ RelationAnswer solve(const TrianglePair& pair, Route* route = nullptr) {
   return classify<Filtered, kRelation>(t1, t2);
 }
 
-inline Overlap overlap_scalar(const TrianglePair& pair, Route* route = nullptr) {
-  const RelationAnswer a = solve<false>(pair, route);
-  if (a.relation == Relation::unsupported) return Overlap::unsupported;
-  return meets(a) ? Overlap::yes : Overlap::no;
-}
-
-inline RelationAnswer relation_scalar(const TrianglePair& pair, Route* route = nullptr) {
-  return solve<true>(pair, route);
-}
 
 }  // namespace tritri::exact::detail

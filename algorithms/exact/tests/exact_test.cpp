@@ -658,18 +658,49 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
       for (auto& v : p.t2.v) v = V(r.integer(-6, 6) + 0.5, r.integer(-6, 6) + 0.25, 3);
       coplanar.push_back(p);
     }
-    s = run_overlap(isa, coplanar);
-    EXPECT_EQ(s.pending, 4096u);
-    EXPECT_LT(s.scalar, 4096u / 5) << "the degenerate and touching ones only";
-    // 3. touching on the grid (shared vertex): the scalar classification with plain double
+    // every pair undecided by pass 1, fewer than `most` left by pass 2
+    const auto second_pass_takes = [&](const std::vector<TrianglePair>& pairs, std::uint64_t most, const char* why) {
+      const ex::Stats st = run_overlap(isa, pairs);
+      EXPECT_EQ(st.pending, pairs.size());
+      EXPECT_LT(st.scalar, most) << why;
+    };
+    second_pass_takes(coplanar, 4096u / 5, "the degenerate and touching ones only");
+    //    exactly coplanar off the grid, on an axis-parallel plane (any axis): decided in 2-D by
+    //    the second pass unless an orientation is within its bound
+    std::vector<TrianglePair> flat;
+    for (int i = 0; i < 4096; ++i) {
+      TrianglePair p = random_pair(r);
+      const int k = i % 3;
+      const double level = r.uniform();
+      for (auto* t : {&p.t1, &p.t2})
+        for (auto& v : t->v) v[k] = level;
+      flat.push_back(p);
+    }
+    second_pass_takes(flat, 4096u / 50, "only values within the det2 bound");
+    // 3. a shared vertex: the shortcut (no orientation at the overlap level), in lanes and scalar
     std::vector<TrianglePair> touching;
     for (int i = 0; i < 2048; ++i) {
       TrianglePair p = small_int_pair(r, 6);
       p.t2[0] = p.t1[0];
       touching.push_back(p);
     }
-    s = run_overlap(isa, touching);
-    EXPECT_GT(s.grid, 1500u);
+    s = run_overlap(isa, touching);  // in lanes, by the second pass
+    EXPECT_EQ(s.pending, 2048u);
+    EXPECT_EQ(s.scalar, 0u);
+    s = run_overlap(ex::Isa::scalar, touching);  // in the scalar pass
+    EXPECT_GT(s.shared, 1500u);
+    EXPECT_EQ(s.grid + s.filtered, 0u);
+    //    touching on the grid without a shared vertex (on an edge's midpoint): the scalar
+    //    classification with plain double
+    std::vector<TrianglePair> on_edge;
+    for (int i = 0; i < 2048; ++i) {
+      TrianglePair p = small_int_pair(r, 6);
+      p.t2[0] = (p.t1[0] + p.t1[1]) * 0.5;
+      on_edge.push_back(p);
+    }
+    s = run_overlap(isa, on_edge);
+    EXPECT_GT(s.grid, 1000u);
+    EXPECT_EQ(s.grid, s.scalar) << s.pending;
     // 4. filter uncertain off the grid -> exact engines (fast path and wide path)
     std::vector<TrianglePair> near;
     for (int i = 0; i < 2048; ++i) near.push_back(near_flat(r, 0, static_cast<int>(r.integer(0, 4))));
@@ -682,6 +713,8 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
     EXPECT_GT(ex::intexact::counts().wide3 + ex::intexact::counts().wide2, 0u);
     expect_all_paths_agree(coplanar, "coplanar");
     expect_all_paths_agree(touching, "touching");
+    expect_all_paths_agree(on_edge, "on an edge");
+    expect_all_paths_agree(std::vector<TrianglePair>(flat.begin(), flat.begin() + 1024), "flat");
     expect_all_paths_agree(std::vector<TrianglePair>(near.begin(), near.begin() + 512), "near");
     expect_all_paths_agree(std::vector<TrianglePair>(wide.begin(), wide.begin() + 512), "wide");
   }
