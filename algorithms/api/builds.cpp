@@ -7,6 +7,14 @@
 #include <string>
 
 namespace tritri {
+
+std::filesystem::path beside_program(const std::filesystem::path& relative) {
+  std::error_code error;
+  const auto program = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return relative;
+  return (program.parent_path() / relative).lexically_normal();
+}
+
 namespace {
 
 constexpr const char* kSuffix = "@v3fma";
@@ -30,12 +38,7 @@ bool cpu_runs_x86_64_v3() {
 #ifdef TRITRI_V3FMA_MODULE
 // TRITRI_V3FMA_MODULE is relative to the running program's directory: the same path leads from
 // build/bin to the module in the build tree and from bin/ to it in an installation.
-std::filesystem::path module_path() {
-  std::error_code error;
-  const auto program = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) return TRITRI_V3FMA_MODULE;
-  return (program.parent_path() / TRITRI_V3FMA_MODULE).lexically_normal();
-}
+std::filesystem::path module_path() { return beside_program(TRITRI_V3FMA_MODULE); }
 
 // Loads the module and returns its registry, or nullptr with `why` set.
 const Registry* load_module(std::string& why) {

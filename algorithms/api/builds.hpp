@@ -11,6 +11,8 @@
 
 #include "tritri/algorithm.hpp"
 
+#include <filesystem>
+
 namespace tritri {
 
 // The module's one exported function (C linkage): the algorithms compiled into it, in a registry
@@ -24,5 +26,9 @@ inline constexpr const char* kBuildModuleEntry = "tritri_build_registry";
 // FMA, the module missing, TRITRI_V3FMA=off), writes one line on stderr saying why and adds
 // nothing: the baseline build is complete without it.
 void add_builds(Registry& registry);
+
+// `relative` taken from the running program's directory (/proc/self/exe), so that a path into
+// the build tree from build/bin is the same path into an installation from its bin/.
+std::filesystem::path beside_program(const std::filesystem::path& relative);
 
 }  // namespace tritri

@@ -22,6 +22,26 @@ Registry& the_registry() {
 
 const Registry& registry() { return the_registry(); }
 
+Algorithm process_peer(Declaration declaration, std::string command) {
+  Algorithm a(std::move(declaration));
+  a.answered_elsewhere = {Level::overlap};
+  a.process = std::move(command);
+  return a;
+}
+
+std::string process_command(const Algorithm& algorithm) {
+#ifdef TRITRI_PEERS_DIR
+  const std::string peers = beside_program(TRITRI_PEERS_DIR).string();
+#else
+  const std::string peers = "peers";
+#endif
+  std::string command = algorithm.process;
+  const std::string quoted = "'" + peers + "'";  // a directory name holds no quote: CMake made it
+  for (std::size_t at = command.find("{peers}"); at != std::string::npos; at = command.find("{peers}", at + quoted.size()))
+    command.replace(at, 7, quoted);
+  return command;
+}
+
 const Algorithm& add_external_algorithm(Algorithm algorithm) {
   Registry& r = the_registry();
   const std::string folder = algorithm.folder;

@@ -24,7 +24,7 @@ const Algorithm& reference_algorithm(const std::string& name) {
       if (x.timeable()) known += (known.empty() ? "" : ", ") + x.name;
     throw std::invalid_argument("unknown reference algorithm '" + name + "' (known: " + known + ")");
   }
-  if (!a->timeable()) throw std::invalid_argument("reference '" + name + "' is a process plug-in: it is never timed");
+  if (!a->timeable()) throw std::invalid_argument("reference '" + name + "' is a process plug-in: Google Benchmark cannot time it");
   if (std::none_of(std::begin(kLevels), std::end(kLevels), [&](Level v) { return a->answers(v); }))
     throw std::invalid_argument("reference '" + name + "' answers no level");
   return *a;
@@ -127,6 +127,7 @@ int run(const Options& options, std::ostream& out) {
   // ---- the tables, the harness's numbers, the JSON ----
   const Summary summary = summarize(entries.timed, planned.pools, lineup, options.pool_size, options.modes);
   print_tables(entries.timed, summary, options.repetitions, out);
+  print_self_timed(entries.self_timed, summary, out);
   print_harness(summary, out);
   if (!options.json_path.empty()) {
     write_json(options.json_path, timing.json, context, entries, planned.pools, summary, family_corpus(options, input));

@@ -453,6 +453,11 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
     EXPECT_FALSE(e["faults"].empty()) << e["name"];
     not_timed.insert(e["name"].get<std::string>());
   }
+  // A process peer (algorithms/README.md) times itself: its results stand apart, under self_timed.
+  for (const auto& e : doc["tritri"]["self_timed"]) {
+    EXPECT_EQ(e["timed_by"], "plug-in") << e["name"];
+    names.insert(e["name"].get<std::string>());
+  }
   for (const auto& a : registry().all())
     for (Level level : {Level::overlap, Level::relation, Level::segment})
       if (a.answers(level)) {

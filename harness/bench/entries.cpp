@@ -2,6 +2,8 @@
 
 #include "cases/util/progress.hpp"
 #include "harness/check/judge.hpp"
+#include "cases/util/input_error.hpp"
+#include "harness/run/process_plugin.hpp"
 #include "harness/run/runner.hpp"
 
 #include <algorithm>
@@ -60,19 +62,48 @@ void add_timed(const Entry& checked, const std::vector<Mode>& modes, Entries& en
   }
 }
 
-// An algorithm that cannot be timed (one whose answers cross a pipe: its time would be the
-// pipe's) is checked on every pool like the others, and reported, not timed.
-void untimed_entries(const Algorithm* a, const Pool& pool, const std::vector<Level>& levels,
-                     const IsolationOptions& isolation, Entries& entries) {
-  const RunAnswers got = run_algorithm(*a, pair_names(pool), pool.pairs, {Level::overlap, Level::relation}, isolation);
+// An entry per level a process plug-in answers, scored on its answers.
+template <class Each>
+void process_entries(const Algorithm* a, const Pool& pool, const std::vector<Level>& levels,
+                     const std::vector<Overlap>& overlap, const std::vector<RelationAnswer>& relation, Each each) {
   for (Level level : levels) {
     if (level == Level::segment || !a->answers(level)) continue;
     auto e = new_entry(a, level, pool);
-    e->score = level == Level::overlap ? score_overlap(pool, got.overlap) : score_relation(pool, got.relation);
-    e->faults = got.faults;
-    e->not_timed = "a process plug-in: its answers cross a pipe, so it is checked, not timed";
-    entries.untimed.push_back(std::move(e));
+    e->score = level == Level::overlap ? score_overlap(pool, overlap) : score_relation(pool, relation);
+    each(std::move(e));
   }
+}
+
+// A process plug-in (its answers cross a pipe: its time there would be the pipe's) that times
+// itself is handed the pool once and times its own loop over it in its own runtime (one time per
+// level it answers: it answers them in one call); its answers there are checked like any others.
+// One that does not, or fails to, is checked on every pool like the others and reported, not timed.
+void process_plugin_entries(const Algorithm* a, const Pool& pool, const std::vector<Level>& levels,
+                            const Options& options, Entries& entries) {
+  const ProcessPluginOptions& process = *find_process_plugin(a->name);
+  std::string why = "a process plug-in that does not time itself (harness/run/process_plugin.hpp, '#time'): "
+                    "its answers cross a pipe, so it is checked, not timed";
+  if (process_features(a->name).timing) {
+    try {
+      const SelfTimed t = time_process_plugin(process, pair_names(pool), pool.pairs, options.repetitions, options.min_time);
+      process_entries(a, pool, levels, t.answers.overlap, t.answers.relation, [&](std::unique_ptr<Entry> e) {
+        e->mode = Mode::call;
+        e->ns_per_pair = t.ns_per_pair;
+        e->timed_by_plugin = true;
+        entries.self_timed.push_back(std::move(e));
+      });
+      return;
+    } catch (const InputError& e) {
+      why = std::string("its own timing failed: ") + e.what();
+    }
+  }
+  const RunAnswers got =
+      run_algorithm(*a, pair_names(pool), pool.pairs, {Level::overlap, Level::relation}, options.isolation);
+  process_entries(a, pool, levels, got.overlap, got.relation, [&](std::unique_ptr<Entry> e) {
+    e->faults = got.faults;
+    e->not_timed = why;
+    entries.untimed.push_back(std::move(e));
+  });
 }
 
 // One untimed pass of the level over the pool on this thread, between a reset and a read of
@@ -188,7 +219,7 @@ Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup
     for (const Algorithm* a : lineup.algorithms) {
       progress.update(done++);
       if (!a->timeable()) {
-        if (planned.levels) untimed_entries(a, planned.pool, levels, options.isolation, entries);
+        if (planned.levels) process_plugin_entries(a, planned.pool, levels, options, entries);
         continue;
       }
       if (planned.levels) level_entries(a, planned.pool, lineup, levels, options, checks, entries);

@@ -28,7 +28,10 @@ struct Entry {
   std::string not_timed;        // why it is checked but not timed, when it is not for a fault
   std::optional<OpCounts> ops;  // totals over the pool
   CounterList counters;         // the algorithm's path counters over one pass (PathCounters)
-  std::vector<double> ns_per_pair;  // one per repetition (CPU time)
+  std::vector<double> ns_per_pair;  // one per repetition (CPU time; the plug-in's clock when timed_by_plugin)
+  // Timed in-process by a process plug-in, in its own runtime (harness/run/process_plugin.hpp,
+  // '#time'), not by Google Benchmark: its answers on the pool were checked all the same.
+  bool timed_by_plugin = false;
 
   // "overlap", or "stage:NAME" for a stage: the second part of the name.
   std::string what() const { return stage ? "stage:" + stage->name : std::string(to_string(*level)); }
@@ -55,6 +58,7 @@ struct Lineup {
 struct Entries {
   EntryList timed;
   EntryList untimed;  // checked and reported, not timed (a fault, or a process plug-in)
+  EntryList self_timed;  // process plug-ins that timed themselves (Entry::timed_by_plugin)
 };
 
 // Checks every algorithm on every pool (each in a child process unless isolation is off) and
@@ -64,6 +68,7 @@ Entries make_entries(const std::vector<PlannedPool>& pools, const Lineup& lineup
                      const Options& options, CheckCache& checks);
 
 // "not timed: ..." lines, with the first pair that crashed or hung, paste-ready.
+// (The self-timed entries are printed by print_self_timed, report.hpp.)
 void report_untimed(const EntryList& untimed, std::ostream& out);
 
 }  // namespace tritri::bench

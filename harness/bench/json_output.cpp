@@ -113,6 +113,13 @@ void write_json(const std::string& path, const std::string& google_json, const R
     for (const auto& e : entries.timed) results.push_back(result_json(*e, summary));
     for (const auto& p : pools) pool_list.push_back(pool_json(p.pool));
     for (const auto& e : entries.untimed) untimed.push_back(untimed_json(*e));
+    // Beside the results, not among them: Google Benchmark did not time these.
+    json self_timed = json::array();
+    for (const auto& e : entries.self_timed) {
+      json r = result_json(*e, summary);
+      r["timed_by"] = "plug-in";
+      self_timed.push_back(std::move(r));
+    }
     json modes = json::array();
     for (Mode m : summary.modes) modes.push_back(to_string(m));
     doc["tritri"] = {{"schema", kBenchSchema},
@@ -123,6 +130,7 @@ void write_json(const std::string& path, const std::string& google_json, const R
                      {"isa", to_string(requested_isa())},
                      {"isa_machine", to_string(machine_isa())},
                      {"not_timed", untimed},
+                     {"self_timed", self_timed},
                      {"pools", pool_list},
                      {"results", results},
                      {"harness", harness_json(summary)},

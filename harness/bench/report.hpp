@@ -59,6 +59,8 @@ std::string fixed(double x, int decimals);
 void print_pools(const std::vector<PlannedPool>& pools, std::ostream& out);
 // After timing: ns per pair (and relative to the reference) per workload, operation counts.
 void print_tables(const EntryList& timed, const Summary& summary, int repetitions, std::ostream& out);
+// After them: the times process plug-ins measured in their own runtime (Entries::self_timed).
+void print_self_timed(const EntryList& self_timed, const Summary& summary, std::ostream& out);
 // The harness's own numbers (floors' share, spread) and the warnings.
 void print_harness(const Summary& summary, std::ostream& out);
 

@@ -61,11 +61,8 @@ std::string time_cell(const Entry* e, const Summary& summary) {
   return cell + (e->score.wrong && !e->floor ? "!" : " ");
 }
 
-void print_times(const EntryList& timed, const Summary& summary, int repetitions, std::ostream& out) {
-  out << "\nns per pair: median of " << repetitions << " repetitions, CPU time; rows algorithm/level/mode (call: one\n"
-      << "pair per out-of-line call; batch: the pool in batches). In brackets: relative to " << summary.reference_row
-      << "\nin the same mode on the same pool (--reference).\n"
-      << "'!': wrong answers on that pool (see the warnings); floor and null are not tests.\n";
+// A table per workload: a row per algorithm/level/mode, a column per pool.
+void print_time_tables(const EntryList& timed, const Summary& summary, std::ostream& out) {
   for (const Table& table : tables_of(timed, true)) {
     // Stages run on the ratio:0.50 pool (the stage workload) and on the paper drivers' pools.
     out << '\n' << table.group << (table.group == "stage" ? " (columns: ratio:VALUE or paper:VALUE pools)" : "") << '\n';
@@ -78,6 +75,14 @@ void print_times(const EntryList& timed, const Summary& summary, int repetitions
       out << '\n';
     }
   }
+}
+
+void print_times(const EntryList& timed, const Summary& summary, int repetitions, std::ostream& out) {
+  out << "\nns per pair: median of " << repetitions << " repetitions, CPU time; rows algorithm/level/mode (call: one\n"
+      << "pair per out-of-line call; batch: the pool in batches). In brackets: relative to " << summary.reference_row
+      << "\nin the same mode on the same pool (--reference).\n"
+      << "'!': wrong answers on that pool (see the warnings); floor and null are not tests.\n";
+  print_time_tables(timed, summary, out);
 }
 
 void print_operations(const EntryList& timed, std::ostream& out) {
@@ -181,6 +186,15 @@ void print_pools(const std::vector<PlannedPool>& pools, std::ostream& out) {
 void print_tables(const EntryList& timed, const Summary& summary, int repetitions, std::ostream& out) {
   print_times(timed, summary, repetitions, out);
   print_operations(timed, out);
+}
+
+void print_self_timed(const EntryList& self_timed, const Summary& summary, std::ostream& out) {
+  if (self_timed.empty()) return;
+  out << "\ntimed in-process by the plug-in: ns per pair, the median of its repetitions of its own loop over\n"
+      << "the pool, on its runtime's monotonic clock (harness/run/process_plugin.hpp, '#time'), not Google\n"
+      << "Benchmark's CPU time; one pair per call of the test, as 'call' mode. In brackets: relative to\n"
+      << summary.reference_row << " in call mode on the same pool. '!': wrong answers on that pool.\n";
+  print_time_tables(self_timed, summary, out);
 }
 
 void print_harness(const Summary& summary, std::ostream& out) {

@@ -102,9 +102,14 @@ constexpr const char* kHelpAfterTimeout =
     "); an algorithm that crashes or hangs on a pool is\n"
     "                     reported with the pair, paste-ready, and not timed on that pool\n"
     "  --no-isolation     check in this process (a crash ends the run)\n\n"
-    "  --exec COMMAND     a process plug-in (harness/run/process_plugin.hpp): checked on every\n"
-    "                     pool and reported, never timed (its answers cross a pipe; on\n"
-    "                     the default pools that takes a while). --exec-name NAME names it.\n\n"
+    "  --exec COMMAND     a process plug-in (harness/run/process_plugin.hpp); name it in --algo\n"
+    "                     (--exec-name NAME names it). One that offers 'timing' in its\n"
+    "                     greeting is handed each pool once and times its own loop over it in\n"
+    "                     its own runtime: its answers are checked, its times reported apart,\n"
+    "                     'timed in-process by the plug-in' (JSON: tritri.self_timed). One that\n"
+    "                     does not is checked on every pool and reported, not timed (its\n"
+    "                     answers cross a pipe). Registered process peers (three-mesh-bvh,\n"
+    "                     fast-tri-tri, rapier) are timed the same way.\n\n"
     "Exit status: 0, 1 if a benchmark reported an error, 2 on bad arguments (an unknown\n"
     "workload or reference among them).\n\n";
 

@@ -72,6 +72,12 @@ struct Algorithm : EntryPoints {
   // Levels it answers through no entry point here: the harness reaches such an algorithm by a
   // means of its own (harness/run/runner.hpp), and checks it but cannot time it.
   LevelSet answered_elsewhere;
+  // For an algorithm that runs as a process (a library in another language, spoken to over the
+  // protocol of harness/run/process_plugin.hpp; it answers its levels elsewhere): the command
+  // that starts it, through /bin/sh, with "{peers}" where the directory of the process peers'
+  // scripts goes, e.g. "node {peers}/three-mesh-bvh/three_mesh_bvh.mjs". process_command()
+  // resolves it. Empty for every other algorithm.
+  std::string process;
 
   // Stages timed on their own by `tritri bench` (see StageEntry). Optional.
   std::vector<StageEntry> stages;
@@ -114,6 +120,15 @@ class Registry {
 
 // Every built-in algorithm, registered once on first use, and any plug-in added since.
 const Registry& registry();
+
+// An algorithm that runs as a process (a process peer: algorithms/README.md): the declaration,
+// answering the overlap level elsewhere, started by `command` (Algorithm::process).
+Algorithm process_peer(Declaration declaration, std::string command);
+
+// Algorithm::process with {peers} replaced by the directory of the process peers' scripts,
+// TRITRI_PEERS_DIR relative to the running program's directory (the same in the build tree and in
+// an installation), quoted for /bin/sh.
+std::string process_command(const Algorithm& algorithm);
 
 // Adds an algorithm from outside the build (a loaded plug-in). Keeps the folder it was given.
 const Algorithm& add_external_algorithm(Algorithm algorithm);
