@@ -45,6 +45,7 @@ std::string shard_name(const MergePart& p) {
 const std::vector<MergeKind>& merge_kinds() {
   static const std::vector<MergeKind> kinds = {
       {"check", &is_check, &merge_check, &dump_check_json},
+      {"hunt", &is_hunt, &merge_hunt, &dump_hunt_json},
   };
   return kinds;
 }
@@ -58,7 +59,7 @@ const MergeKind& kind_of_parts(const std::vector<MergePart>& parts) {
           throw InputError(p.path + ": not a " + kind.name + " result, as " + parts[0].path + " is");
       return kind;
     }
-  throw InputError(parts[0].path + ": not a result tritri merge knows (check JSON)");
+  throw InputError(parts[0].path + ": not a result tritri merge knows (check or hunt JSON)");
 }
 
 std::vector<const MergePart*> shards_in_order(const std::vector<MergePart>& parts,

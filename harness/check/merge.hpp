@@ -42,4 +42,9 @@ std::vector<const MergePart*> shards_in_order(const std::vector<MergePart>& part
 // The check JSON's merge (harness/check/check_output.hpp).
 nlohmann::json merge_check(const std::vector<MergePart>& parts);
 
+// The hunt JSON's merge (merge_hunt.cpp; the document: harness/hunt/output.cpp).
+bool is_hunt(const nlohmann::json& doc);
+nlohmann::json merge_hunt(const std::vector<MergePart>& parts);
+void dump_hunt_json(std::ostream& out, const nlohmann::json& doc);
+
 }  // namespace tritri

@@ -17,7 +17,8 @@ namespace {
 
 constexpr const char* kUsageText =
     "usage: tritri hunt --algo NAME... [--seconds S | --pairs N] [--seed K] [--level overlap|relation]\n"
-    "                   [--baseline FILE...] [--batch N] [--shrink-rounds N]\n"
+    "                   [--baseline FILE...] [--batch N] [--shrink-rounds N] [--shrink-seconds S]\n"
+    "                   [--shard K/N]\n"
     "                   [--plugin LIB...] [--exec COMMAND]... [--timeout S] [--max-faults N] --out DIR\n\n"
     "Searches for pairs each algorithm answers wrongly, beyond the corpus: corpus constructions\n"
     "drawn with fresh seeds, the bench's random shapes, small-integer and dyadic grids, perturbed\n"
@@ -39,7 +40,8 @@ constexpr const char* kUsageText =
     "per group, time to first failure, witness sizes). A progress line on stderr shows pairs/s\n"
     "and groups.\n\n"
     "  --algo NAME...       the algorithms to hunt, one after the other (required; 'tritri list')\n"
-    "  --seconds S          search budget per algorithm (default 60); shrinking comes after it\n"
+    "  --seconds S          search budget per algorithm (default 60); shrinking comes after it,\n"
+    "                       with as many seconds again unless --shrink-seconds says otherwise\n"
     "  --pairs N            search budget in candidates instead: the run is then deterministic\n"
     "                       for a seed (the same groups, counts and witnesses on every run)\n"
     "  --seed K             the search's seed (default 1); batch k draws from (K, k) alone\n"
@@ -48,6 +50,15 @@ constexpr const char* kUsageText =
     "                       listed as known and not shrunk; exit 1 if a new group appears\n"
     "  --batch N            candidates per batch (default 4096)\n"
     "  --shrink-rounds N    at most N shrinking steps per witness (default 64)\n"
+    "  --shrink-seconds S   the shrinking's budget per algorithm, all its groups together\n"
+    "                       (default: --seconds; none with --pairs, so that run stays\n"
+    "                       deterministic); groups shrink in order of discovery and those it\n"
+    "                       does not reach keep the failure as found (shrink_cut in the JSON)\n"
+    "  --shard K/N          with --pairs: hunt only part K of N of the run's batches (0 <= K < N;\n"
+    "                       contiguous); 'tritri merge' joins the N hunt.json files into the\n"
+    "                       one run's, the same but for the clock's fields (seconds,\n"
+    "                       pairs_per_second, shrink_seconds, first_seconds,\n"
+    "                       first_failure_seconds: the merge adds or takes the first shard's)\n"
     "  --out DIR            where the witnesses and the JSON go (created)\n";
 
 constexpr const char* kExitStatus =
@@ -89,7 +100,15 @@ hunt::HuntOptions options_of(const Args& args, hunt::HuntRun& run) {
   o.batch = run.batch = args.count("--batch", o.batch);
   if (o.batch < 2) throw UsageError("--batch: at least 2");
   o.shrink_rounds = static_cast<int>(args.count("--shrink-rounds", static_cast<std::size_t>(o.shrink_rounds)));
+  o.shrink_seconds = args.seconds("--shrink-seconds");
+  if (!o.shrink_seconds && !o.pairs) o.shrink_seconds = o.seconds;
+  run.shrink_seconds = o.shrink_seconds;
   o.isolation = isolation_options(args);
+  if (const auto shard = shard_spec(args)) {
+    if (!o.pairs) throw UsageError("--shard K/N needs --pairs N: a hunt in seconds has no fixed set of batches to split");
+    const auto [first, end] = hunt::take_shard(o, shard->index, shard->count);
+    run.shard = hunt::HuntRun::Shard{shard->index, shard->count, first, end, *o.pairs};
+  }
   return o;
 }
 
@@ -107,7 +126,8 @@ void print_summary(const hunt::HuntResult& r) {
 
 int cmd_hunt(int argc, char** argv) {
   Args args(argc, argv,
-            merged({.valued = {"--seconds", "--pairs", "--seed", "--level", "--batch", "--shrink-rounds", "--out"},
+            merged({.valued = {"--seconds", "--pairs", "--seed", "--level", "--batch", "--shrink-rounds", "--shrink-seconds",
+                               "--out", "--shard"},
                     .lists = {"--algo", "--baseline"},
                     .operands = false},
                    kRunOptions));

@@ -29,10 +29,12 @@ int cmd_merge(int argc, char** argv) {
   Args args(argc, argv, {.valued = {"--out"}});
   if (args.help()) {
     std::cout << "usage: tritri merge [--out FILE] PART.json...\n\n"
-                 "Joins the results of the shards of one campaign (tritri check --shard K/N --json) into\n"
-                 "the result one run on one machine writes, byte for byte: counts added, per-family\n"
+                 "Joins the results of the shards of one campaign into the result one run on one machine\n"
+                 "writes. Check (tritri check --shard K/N --json): byte for byte; counts added, per-family\n"
                  "tables, confusion cells and segment errors joined, failures in the run's order (and\n"
-                 "capped as --json-max-failures capped them), the scorecards of shard 0.\n"
+                 "capped as --json-max-failures capped them), the scorecards of shard 0. Hunt (tritri\n"
+                 "hunt --pairs N --shard K/N, each shard's hunt.json): the same groups, counts and\n"
+                 "witnesses as the one run; the clock's fields are the shards' seconds added up.\n"
                  "A wrong set of parts is refused, naming the problem: a shard missing or given twice,\n"
                  "shards whose case ranges overlap or leave a gap, or a part of another campaign (another\n"
                  "corpus, judge, schema, choice of algorithms or groupings, or number of shards).\n\n"

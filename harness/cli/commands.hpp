@@ -104,5 +104,7 @@ struct Shard {
 };
 extern const char* const kShardHelp;
 std::optional<Shard> shard_option(const Args& args);
+// --shard K/N parsed and checked (index and count only), for commands whose parts are not cases.
+std::optional<Shard> shard_spec(const Args& args);
 
 }  // namespace tritri::cli

@@ -80,7 +80,7 @@ const char* const kShardHelp =
     "                       cases in file order): the N outputs concatenated in order (the header\n"
     "                       line is shard 0's) are the unsharded output\n";
 
-std::optional<Shard> shard_option(const Args& args) {
+std::optional<Shard> shard_spec(const Args& args) {
   const auto spec = args.value("--shard");
   if (!spec) return std::nullopt;
   Shard shard;
@@ -96,8 +96,14 @@ std::optional<Shard> shard_option(const Args& args) {
   }
   if (shard.count == 0 || shard.index >= shard.count)
     throw UsageError("--shard " + *spec + ": K must be below N and N at least 1 (shards are numbered 0 to N-1)");
-  shard.total = count_cases(args.positional());
-  shard.range = shard_range(shard.index, shard.count, shard.total);
+  return shard;
+}
+
+std::optional<Shard> shard_option(const Args& args) {
+  auto shard = shard_spec(args);
+  if (!shard) return std::nullopt;
+  shard->total = count_cases(args.positional());
+  shard->range = shard_range(shard->index, shard->count, shard->total);
   return shard;
 }
 

@@ -1,9 +1,11 @@
 #include "harness/hunt/hunt.hpp"
 
+#include "cases/case_stream.hpp"
 #include "cases/label.hpp"
 #include "harness/check/check.hpp"
 #include "harness/check/judge.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -129,14 +131,18 @@ class Hunter {
   std::vector<Truth> truths(const std::vector<TrianglePair>& pairs) const {
     return self_ ? label_pairs(pairs) : exact_truths(pairs);
   }
-  bool budget_left(double elapsed) const {
-    return options_.pairs ? result_.pairs < *options_.pairs : elapsed < options_.seconds;
+  // Batch k starts at pair k·batch of the whole run (search_batch draws exactly `batch`).
+  std::size_t start_of(std::size_t k) const { return k * options_.batch; }
+  bool budget_left(std::size_t k, double elapsed) const {
+    if (options_.end_batch && k >= *options_.end_batch) return false;
+    return options_.pairs ? start_of(k) < *options_.pairs : elapsed < options_.seconds;
   }
-  void judge_batch(const std::vector<Candidate>& batch, double elapsed);
+  void judge_batch(const std::vector<Candidate>& batch, std::size_t start, double elapsed);
   void confirm(const std::vector<TrianglePair>& pairs, std::vector<Truth>& truths, std::vector<Judged>& verdicts,
                const std::vector<Answers>& answers);
-  void record(const Candidate& c, const Truth& truth, const Judged& j, const Judged& base, double elapsed);
-  void shrink_group(Group& group);
+  void record(const Candidate& c, const Truth& truth, const Judged& j, const Judged& base, std::size_t start,
+              double elapsed);
+  void shrink_group(Group& group, const std::function<bool()>& out_of_time);
 
   const Algorithm& algorithm_;
   const HuntOptions& options_;
@@ -173,7 +179,8 @@ void Hunter::confirm(const std::vector<TrianglePair>& pairs, std::vector<Truth>&
   }
 }
 
-void Hunter::record(const Candidate& c, const Truth& truth, const Judged& j, const Judged& base, double elapsed) {
+void Hunter::record(const Candidate& c, const Truth& truth, const Judged& j, const Judged& base, std::size_t start,
+                    double elapsed) {
   // A transformed copy whose base was answered right: the transformation broke it.
   const Transform t = c.transform != Transform::none && !base.wrong ? c.transform : Transform::none;
   const Signature signature = signature_of(c.pair, truth.relation, options_.level, j.answer, t);
@@ -182,7 +189,7 @@ void Hunter::record(const Candidate& c, const Truth& truth, const Judged& j, con
     Group g;
     g.signature = signature;
     g.first_seconds = elapsed;
-    g.first_pairs = result_.pairs;
+    g.first_pairs = start;
     g.source = std::string(to_string(c.source));
     g.detail = j.detail;
     g.known = options_.known.count(it->first) > 0;
@@ -202,11 +209,11 @@ void Hunter::record(const Candidate& c, const Truth& truth, const Judged& j, con
   result_.faults += j.fault;
   if (!result_.first_failure_seconds) {
     result_.first_failure_seconds = elapsed;
-    result_.first_failure_pairs = result_.pairs;
+    result_.first_failure_pairs = start;
   }
 }
 
-void Hunter::judge_batch(const std::vector<Candidate>& batch, double elapsed) {
+void Hunter::judge_batch(const std::vector<Candidate>& batch, std::size_t start, double elapsed) {
   std::vector<TrianglePair> pairs;
   for (const Candidate& c : batch) pairs.push_back(c.pair);
   IsolationOptions isolation = options_.isolation;
@@ -222,13 +229,13 @@ void Hunter::judge_batch(const std::vector<Candidate>& batch, double elapsed) {
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     if (!verdicts[i].wrong) continue;
     if (verdicts[i].fault && !judgeable(truth[i])) truth[i] = label_pairs({pairs[i]})[0];
-    record(batch[i], truth[i], verdicts[i], verdicts[batch[i].base], elapsed);
+    record(batch[i], truth[i], verdicts[i], verdicts[batch[i].base], start, elapsed);
   }
 }
 
 // Shrinks a group's witness: a step is kept while the algorithm gives the same wrong answer and
 // the judge's verdict is unchanged; the witness is then confirmed by the oracle.
-void Hunter::shrink_group(Group& group) {
+void Hunter::shrink_group(Group& group, const std::function<bool()>& out_of_time) {
   const Truth truth = group_truth_[static_cast<std::size_t>(&group - result_.groups.data())];
   IsolationOptions isolation = options_.isolation;
   isolation.max_faults = 4;  // a step that crashes is not the same failure: stop such a batch early
@@ -242,8 +249,9 @@ void Hunter::shrink_group(Group& group) {
     }
     return fails;
   };
-  const Shrunk shrunk = shrink(group.found, still_fails, options_.shrink_rounds);
+  const Shrunk shrunk = shrink(group.found, still_fails, options_.shrink_rounds, out_of_time);
   group.shrink_steps = shrunk.steps;
+  group.shrink_cut = shrunk.cut;
   if (self_ || same_truth(label_pairs({shrunk.pair})[0], truth)) {
     group.witness = shrunk.pair;
     return;
@@ -261,18 +269,21 @@ HuntResult Hunter::run() {
     for (std::size_t i = 0; i < pairs.size(); ++i) overlap[i] = t[i].overlap;
     return overlap;
   };
-  for (std::uint64_t k = 0; budget_left(since()) && !result_.stopped; ++k) {
+  for (std::size_t k = options_.first_batch; budget_left(k, since()) && !result_.stopped; ++k) {
     std::vector<Candidate> batch = search_batch(options_.seed, k, options_.batch, decide);
-    if (options_.pairs && result_.pairs + batch.size() > *options_.pairs) batch.resize(*options_.pairs - result_.pairs);
-    judge_batch(batch, since());
+    if (options_.pairs && start_of(k) + batch.size() > *options_.pairs) batch.resize(*options_.pairs - start_of(k));
+    judge_batch(batch, start_of(k), since());
     result_.pairs += batch.size();
     ++result_.batches;
     if (options_.isolation.max_faults > 0 && result_.faults >= options_.isolation.max_faults) result_.stopped = true;
     if (options_.progress) options_.progress(result_.pairs, result_.groups.size(), result_.failures, since());
   }
   result_.seconds = since();
+  const std::function<bool()> out_of_time = [&] {
+    return options_.shrink_seconds && since() - result_.seconds >= *options_.shrink_seconds;
+  };
   for (Group& g : result_.groups)
-    if (!g.known && g.signature.answer != "crash" && g.signature.answer != "timeout") shrink_group(g);
+    if (!g.known && g.signature.answer != "crash" && g.signature.answer != "timeout") shrink_group(g, out_of_time);
   result_.shrink_seconds = since() - result_.seconds;
   return result_;
 }
@@ -283,6 +294,15 @@ void check_level(const Algorithm& algorithm, Level level) {
   // Every algorithm answers overlap, directly or through its relation or segment (overlap_of).
   if (level == Level::relation && !algorithm.answers(Level::relation))
     throw std::invalid_argument(algorithm.name + " does not answer the relation level (--level relation)");
+}
+
+std::pair<std::size_t, std::size_t> take_shard(HuntOptions& options, std::size_t k, std::size_t n) {
+  if (!options.pairs) throw std::invalid_argument("a hunt in seconds has no fixed set of batches to split into shards");
+  const std::size_t pairs = *options.pairs, batches = (pairs + options.batch - 1) / options.batch;
+  const CaseRange range = shard_range(k, n, batches);
+  options.first_batch = range.first;
+  options.end_batch = range.end;
+  return {std::min(range.first * options.batch, pairs), std::min(range.end * options.batch, pairs)};
 }
 
 HuntResult run_hunt(const Algorithm& algorithm, const HuntOptions& options) {

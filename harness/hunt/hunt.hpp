@@ -3,8 +3,8 @@
 // the failures by a signature and shrink one witness per group (shrink.hpp).
 //
 // Deterministic for a seed when the budget is a number of pairs: batch k is drawn from
-// stream_seed(seed, "hunt", k) alone, and shrinking takes no time limit. With a budget in seconds
-// the pairs tried depend on the machine's speed; each batch is still the same.
+// stream_seed(seed, "hunt", k) alone, and shrinking takes no time limit unless one is given. With
+// a budget in seconds the pairs tried depend on the machine's speed; each batch is still the same.
 #pragma once
 
 #include "harness/hunt/search.hpp"
@@ -28,7 +28,16 @@ struct HuntOptions {
   std::optional<std::size_t> pairs;   // a budget in pairs: deterministic
   Level level = Level::overlap;       // the level judged: overlap, or relation
   std::size_t batch = 4096;           // candidates per batch
+  // A shard of a hunt in pairs (`--shard K/N`): batches [first_batch, end_batch) of the whole
+  // run's. Pair positions (first_pairs, first_failure_pairs) stay the whole run's, so the shards'
+  // results merge into the one run's (tritri merge).
+  std::size_t first_batch = 0;
+  std::optional<std::size_t> end_batch;
   int shrink_rounds = 64;             // per witness
+  // The shrinking's budget over all groups, from the search's end: groups shrink in order of
+  // discovery, and those the budget does not reach keep their found pair (Group::shrink_cut).
+  // Unset: no limit (a budget in pairs stays deterministic).
+  std::optional<double> shrink_seconds;
   IsolationOptions isolation;         // max_faults counts over the whole hunt
   std::set<std::string> known;        // signatures of a baseline: reported, not shrunk, not new
   // Called after every batch: pairs tried, groups, confirmed failures, seconds.
@@ -52,13 +61,14 @@ struct Group {
   Signature signature;
   std::size_t count = 0;           // confirmed failures with this signature
   double first_seconds = 0;        // search time at its first failure
-  std::size_t first_pairs = 0;     // pairs tried before its batch
+  std::size_t first_pairs = 0;     // pairs tried before its batch (in the whole run, for a shard)
   std::string source;              // the generator of its first failure
   std::string detail;              // a crash's or timeout's description
   bool known = false;              // in the baseline
   TrianglePair found;              // its cheapest failure (pair_cost) as found: where shrinking starts
   TrianglePair witness;            // shrunk (the found pair for faults and known groups)
   int shrink_steps = 0;
+  bool shrink_cut = false;         // the shrinking's time budget ran out before this witness was done
   bool confirmed_witness = true;   // the oracle agrees the witness fails (shrinking judged by exact)
 };
 
@@ -82,6 +92,10 @@ struct HuntResult {
 // (check_level); overlap is judged for every algorithm, as check derives it (overlap_of).
 void check_level(const Algorithm& algorithm, Level level);
 HuntResult run_hunt(const Algorithm& algorithm, const HuntOptions& options);
+
+// Part k of n of a hunt in pairs (options.pairs set): contiguous batches, set in `options`.
+// Returns the part's pairs [first, end) of the whole run's.
+std::pair<std::size_t, std::size_t> take_shard(HuntOptions& options, std::size_t k, std::size_t n);
 
 // The signature's configuration fields of a pair (plane, shared, scale) with the oracle's relation.
 Signature signature_of(const TrianglePair& pair, Relation oracle, Level level, std::string answer, Transform t);

@@ -7,6 +7,8 @@
 #include "cases/label.hpp"
 #include "cases/oracle/oracle.hpp"
 #include "harness/check/check.hpp"
+#include "harness/check/merge.hpp"
+#include "cases/util/input_error.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -151,6 +153,87 @@ TEST(Hunt, ASeedAndABudgetInPairsGiveTheSameHunt) {
   const nlohmann::json j = hunt_json({a}, HuntRun{});
   EXPECT_EQ(j["schema"], "tritri-hunt/1");
   EXPECT_EQ(j["algorithms"][0]["groups"].size(), a.groups.size());
+}
+
+// The shrinking's budget is asked before each round, not read from a clock here: a budget spent
+// from the start leaves every witness as found, and says so; an unlimited one shrinks them.
+TEST(Hunt, ASpentShrinkBudgetKeepsEachWitnessAsFoundAndSaysSo) {
+  HuntOptions o = short_hunt(4096);
+  o.shrink_seconds = 0;
+  const HuntResult cut = run_hunt(planted(), o);
+  const HuntResult full = run_hunt(planted(), short_hunt(4096));
+  ASSERT_FALSE(cut.groups.empty());
+  ASSERT_EQ(cut.groups.size(), full.groups.size());
+  int shrunk = 0;
+  for (std::size_t i = 0; i < cut.groups.size(); ++i) {
+    const Group& g = cut.groups[i];
+    EXPECT_TRUE(g.shrink_cut) << g.signature.key();
+    EXPECT_EQ(g.shrink_steps, 0);
+    EXPECT_EQ(pair_cost(g.witness), pair_cost(g.found));
+    EXPECT_FALSE(full.groups[i].shrink_cut);
+    shrunk += full.groups[i].shrink_steps > 0;
+  }
+  EXPECT_GT(shrunk, 0);
+  const nlohmann::json j = hunt_json({cut}, HuntRun{});
+  EXPECT_TRUE(j["algorithms"][0]["groups"][0]["witness"]["shrink_cut"].get<bool>());
+}
+
+TEST(Hunt, ShrinkingStopsWhenToldTimeIsUp) {
+  TrianglePair start;
+  const double odd[18] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67};
+  for (int i = 0; i < 18; ++i) coordinate(start, i) = odd[i] * 1.0009765625;  // 11 significant bits each
+  const StillFails always = [](const std::vector<TrianglePair>& pairs) { return std::vector<bool>(pairs.size(), true); };
+  int asked = 0;
+  const Shrunk one = shrink(start, always, 64, [&asked] { return ++asked > 1; });
+  EXPECT_EQ(one.steps, 1);
+  EXPECT_TRUE(one.cut);
+  const Shrunk all = shrink(start, always, 64);
+  EXPECT_FALSE(all.cut);
+  EXPECT_GT(all.steps, 1);
+}
+
+// The fields a clock writes: they differ between any two runs, sharded or not.
+nlohmann::json without_clock(nlohmann::json doc) {
+  for (auto& a : doc["algorithms"]) {
+    for (const char* k : {"seconds", "pairs_per_second", "shrink_seconds", "first_failure_seconds"}) a.erase(k);
+    for (auto& g : a["groups"]) g.erase("first_seconds");
+  }
+  return doc;
+}
+
+nlohmann::json sharded_hunt(std::size_t k, std::size_t n, std::size_t pairs) {
+  HuntOptions o = short_hunt(pairs);
+  o.batch = 1024;
+  HuntRun run;
+  run.pairs = pairs;
+  run.batch = o.batch;
+  if (n > 1) {
+    const auto [first, end] = take_shard(o, k, n);
+    run.shard = HuntRun::Shard{k, n, first, end, pairs};
+  }
+  return hunt_json({run_hunt(planted(), o), run_hunt(*registry().find("moller97"), o)}, run);
+}
+
+TEST(Hunt, FourShardsMergeIntoTheOneRunButForTheClock) {
+  const std::size_t pairs = 5 * 1024 + 100;  // a last batch cut short, and shards of unequal size
+  const nlohmann::json whole = sharded_hunt(0, 1, pairs);
+  std::vector<MergePart> parts;
+  for (std::size_t k = 0; k < 4; ++k) parts.push_back({"shard-" + std::to_string(k) + ".json", sharded_hunt(k, 4, pairs)});
+  std::swap(parts[0], parts[3]);  // the order given does not matter
+  const nlohmann::json merged = kind_of_parts(parts).merge(parts);
+  ASSERT_GT(whole["algorithms"][0]["groups"].size(), 1u);
+  EXPECT_EQ(without_clock(merged).dump(1), without_clock(whole).dump(1));
+  // A wrong set is refused, naming the problem.
+  std::vector<MergePart> three(parts.begin(), parts.begin() + 3);
+  EXPECT_THROW(kind_of_parts(three).merge(three), InputError);
+  std::vector<MergePart> foreign = parts;
+  foreign[1].doc["seed"] = 2;
+  try {
+    kind_of_parts(foreign).merge(foreign);
+    ADD_FAILURE() << "merged a shard of another hunt";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("another seed"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Hunt, CoordinateCostCountsBits) {

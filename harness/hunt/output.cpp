@@ -35,6 +35,7 @@ nlohmann::json witness_json(const Group& g) {
           {"distinct", size.distinct},
           {"small", size.small()},
           {"shrink_steps", g.shrink_steps},
+          {"shrink_cut", g.shrink_cut},
           {"confirmed", g.confirmed_witness}};
 }
 
@@ -49,7 +50,8 @@ nlohmann::json group_json(const HuntResult& r, const Group& g, std::size_t n) {
           {"first_pairs", g.first_pairs},                   {"source", g.source},
           {"detail", g.detail},     {"known", g.known},
           {"line", format_case(witness_case(r, g, n), NumberStyle::shortest)},
-          {"found", format_case(found, NumberStyle::hex)},  {"witness", witness_json(g)}};
+          {"found", format_case(found, NumberStyle::hex)},  {"found_cost", pair_cost(g.found)},
+          {"witness", witness_json(g)}};
 }
 
 template <class T>
@@ -112,17 +114,26 @@ nlohmann::json hunt_json(const std::vector<HuntResult>& results, const HuntRun& 
       disagreements.push_back(format_case(c, NumberStyle::hex));
     }
   }
-  return {{"schema", kSchema},
+  nlohmann::json doc = {{"schema", kSchema},
           {"oracle", oracle_description()},
           {"judge", "exact (batch); every failure confirmed by the oracle"},
           {"seed", run.seed},
           {"level", run.level},
-          {"budget", {{"seconds", or_null(run.seconds)}, {"pairs", or_null(run.pairs)}}},
+          {"budget",
+           {{"seconds", or_null(run.seconds)}, {"pairs", or_null(run.pairs)}, {"shrink_seconds", or_null(run.shrink_seconds)}}},
           {"batch", run.batch},
           {"baselines", run.baselines},
           {"complete", complete},
           {"algorithms", algorithms},
           {"exact_oracle_disagreements", disagreements}};
+  // The fields tritri merge checks (harness/check/merge.hpp), in candidate pairs.
+  if (run.shard)
+    doc["shard"] = {{"index", run.shard->index},
+                    {"count", run.shard->count},
+                    {"first_case", run.shard->first},
+                    {"end_case", run.shard->end},
+                    {"total_cases", run.shard->total}};
+  return doc;
 }
 
 std::map<std::string, std::set<std::string>> read_hunt_baseline(const std::string& path) {

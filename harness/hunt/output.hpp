@@ -22,8 +22,14 @@ struct HuntRun {
   std::string level = "overlap";
   std::optional<double> seconds;       // the budget per algorithm
   std::optional<std::size_t> pairs;
+  std::optional<double> shrink_seconds;  // the shrinking's budget per algorithm
   std::size_t batch = 0;
   std::vector<std::string> baselines;  // files
+  // --shard K/N of a hunt in pairs: its pairs [first, end) of the whole run's total.
+  struct Shard {
+    std::size_t index = 0, count = 1, first = 0, end = 0, total = 0;
+  };
+  std::optional<Shard> shard;
 };
 
 // One case line per group, named hunt.ALGORITHM.N, labelled expect= (the oracle's relation),

@@ -143,10 +143,16 @@ std::vector<TrianglePair> simpler_pairs(const TrianglePair& pair) {
   return out;
 }
 
-Shrunk shrink(const TrianglePair& start, const StillFails& still_fails, int max_rounds) {
-  Shrunk s{start, 0};
+Shrunk shrink(const TrianglePair& start, const StillFails& still_fails, int max_rounds,
+              const std::function<bool()>& out_of_time) {
+  Shrunk s;
+  s.pair = start;
   std::size_t cost = pair_cost(start);
   for (int round = 0; round < max_rounds; ++round) {
+    if (out_of_time && out_of_time()) {
+      s.cut = true;
+      break;
+    }
     std::vector<TrianglePair> tries;
     for (const TrianglePair& q : simpler_pairs(s.pair))
       if (pair_cost(q) < cost && q.t1[0].allFinite() && q.t1[1].allFinite() && q.t1[2].allFinite() &&

@@ -34,12 +34,15 @@ using StillFails = std::function<std::vector<bool>(const std::vector<TrianglePai
 struct Shrunk {
   TrianglePair pair;
   int steps = 0;  // steps taken (each a strictly cheaper pair that still fails)
+  bool cut = false;  // stopped by out_of_time, not because no simpler pair still fails
   std::vector<TrianglePair> trail;  // the pair after each step
 };
 
 // Greedy: each round tries every simpler pair in one call of `still_fails` and moves to the
-// cheapest that still fails, until none is cheaper or `max_rounds` rounds have run.
-Shrunk shrink(const TrianglePair& start, const StillFails& still_fails, int max_rounds = 64);
+// cheapest that still fails, until none is cheaper, `max_rounds` rounds have run or, asked before
+// each round, `out_of_time` says the caller's budget is spent (`cut` is then set).
+Shrunk shrink(const TrianglePair& start, const StillFails& still_fails, int max_rounds = 64,
+              const std::function<bool()>& out_of_time = {});
 
 // How small a witness is, for the JSON and the done-when rule: every coordinate an integer of at
 // most 4 digits, or at most 8 significant bits.
