@@ -103,7 +103,8 @@ class ReportFromFixture(unittest.TestCase):
     def test_the_parts_are_there(self):
         for heading in ("1 Correctness", "2 Speed against error", "3 Time against intersection ratio",
                         "4 Stability", "5 What the compiler changes", "6 The papers' tables",
-                        "7 Scenes: meshes in motion through a BVH broad phase", "8 Failure gallery", "9 Provenance"):
+                        "7 Scenes: meshes in motion through a BVH broad phase",
+                        "8 The tests the web ships, in their own runtime", "9 Failure gallery", "10 Provenance"):
             self.assertIn("## " + heading + "\n", self.text)
 
     def test_figures_for_each_part(self):
@@ -401,7 +402,7 @@ class ReportFromFixture(unittest.TestCase):
 
     # ---- parts 6 and 7 ----
     def test_gallery_shows_listed_failures_with_coordinates(self):
-        text = section(self.text, "8 Failure gallery")
+        text = section(self.text, "9 Failure gallery")
         failures = self.check["failures"]
         shown = [f for f in failures if "`%s`" % f["case"] in self.text]
         self.assertTrue(shown)
@@ -410,7 +411,7 @@ class ReportFromFixture(unittest.TestCase):
         self.assertIn("three orthographic views", text)
 
     def test_provenance_names_machine_sha_seed_and_hash(self):
-        (header, rows), = tables_in(self.text, "9 Provenance")[:1]
+        (header, rows), = tables_in(self.text, "10 Provenance")[:1]
         values = dict((r[0], r[1]) for r in rows)
         prov = load("provenance.json")
         man = load("corpus.json")
@@ -570,6 +571,52 @@ class Modes(unittest.TestCase):
             body = section(text, heading)
             for words in ("call mode", "batch mode", run.cpu, run.isa):
                 self.assertIn(words, body, (heading, words))
+
+
+class WebPeers(unittest.TestCase):
+    """The web peers' section: their self-timed results over moller97 timed the same way, and their
+    answers from check.json."""
+
+    class Part:
+        def __init__(self):
+            self.text = ""
+
+        def add(self, text):
+            self.text += text + "\n"
+
+    class Run:
+        def __init__(self, d):
+            self.d = d
+
+    def self_timed(self, algorithm, workload, ns):
+        return {"algorithm": algorithm, "level": "overlap", "mode": "call", "workload": workload,
+                "ns_per_pair_median": ns, "timed_by": "plug-in"}
+
+    def test_each_peer_is_given_over_moller97_through_the_protocol_and_with_its_answers(self):
+        from tritri_report.sections import web_peers
+        bench = {"tritri": {"schema": "tritri-bench/2", "cpu_model": "Some CPU", "isa": "avx2", "results": [
+            {"algorithm": "moller97", "level": "overlap", "mode": "call", "workload": "ratio:0.50",
+             "ns_per_pair_median": 30.0}], "self_timed": [
+            self.self_timed("moller97-process", "ratio:0.50", 40.0),
+            self.self_timed("null-process", "ratio:0.50", 4.0),
+            self.self_timed("rapier", "ratio:0.50", 4000.0)]}}
+        tally = {"algorithm": "rapier", "family": "f", "cases": 10, "false_positives": 3, "false_negatives": 1,
+                 "unsupported": 0, "crashes": 0, "timeouts": 0, "misclassified": None, "segment": None}
+        check = {"algorithms": [{"name": "rapier"}], "tallies": [tally]}
+        part = self.Part()
+        web_peers.render(self.Run({"peers_bench": bench, "check": check}), part)
+        (_, times), (_, answers) = markdown.parse_tables(part.text)
+        times = {r[0]: r for r in times}
+        self.assertEqual(times["rapier"][3], "4000.0 (100.00)")
+        self.assertEqual(times["null-process"][3], "4.00 (0.10)")
+        self.assertEqual(times["moller97"][3], "30.0")
+        self.assertEqual(answers, [["rapier", "10", "3", "1", "0", "0", "40.00%"]])
+
+    def test_without_the_file_it_says_not_measured(self):
+        from tritri_report.sections import web_peers
+        part = self.Part()
+        web_peers.render(self.Run({}), part)
+        self.assertIn("not measured", part.text.lower())
 
 
 class Groups(unittest.TestCase):

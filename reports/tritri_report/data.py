@@ -32,6 +32,7 @@ FILES = {
     "mutants": "mutants.json",
     "float_bench": "float-bench.json",
     "papers_bench": "papers-bench.json",
+    "peers_bench": "bench-peers.json",
 }
 # The named suites' checks (check-yuhe13.json, ...) are named by the papers' published files.
 
@@ -51,7 +52,8 @@ OLD_MODE = "batch"
 
 # The kind of the roles whose name does not start with it.
 _KIND_OF_ROLE = {"symmetry": "check", "sweeps": "check", "sweeps_float": "check", "builtin": "check",
-                 "compiler_diff": "diff", "compiler_bench": "bench", "float_bench": "bench", "papers_bench": "bench"}
+                 "compiler_diff": "diff", "compiler_bench": "bench", "float_bench": "bench", "papers_bench": "bench",
+                 "peers_bench": "bench"}
 
 
 def load_json(path, kind):

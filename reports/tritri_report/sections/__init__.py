@@ -12,7 +12,7 @@ The report writes each heading, then calls render.
 
 from . import (asymmetry, authors, baseline, compiler, correctness, exact_test, float_double, float_speed, gallery,
                header, hunt, moller97, papers, provenance, sabharwal15, scenes, scorecard, shen03, speed_error,
-               stability, summary, time_ratio, tropp06, unquoted, yuhe13)
+               stability, summary, time_ratio, tropp06, unquoted, web_peers, yuhe13)
 
 SECTIONS = [
     header,
@@ -38,6 +38,7 @@ SECTIONS = [
     float_speed,
     authors,
     scenes,
+    web_peers,
     gallery,
     provenance,
 ]
