@@ -11,10 +11,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-bool is_check(const Json& doc) {
-  return doc.is_object() && doc.contains("schema") && doc["schema"].is_string() &&
-         doc["schema"].get<std::string>().rfind("tritri-check/", 0) == 0;
-}
+bool is_check(const Json& doc) { return schema_starts_with(doc, "tritri-check/"); }
 
 // The value at a dotted path ("judge.kind"), or null.
 Json at_path(const Json& doc, const std::string& path) {
@@ -62,8 +59,16 @@ const MergeKind& kind_of_parts(const std::vector<MergePart>& parts) {
   throw InputError(parts[0].path + ": not a result tritri merge knows (check or hunt JSON)");
 }
 
-std::vector<const MergePart*> shards_in_order(const std::vector<MergePart>& parts,
+bool schema_starts_with(const Json& doc, const std::string& prefix) {
+  return doc.is_object() && doc.contains("schema") && doc["schema"].is_string() &&
+         doc["schema"].get<std::string>().rfind(prefix, 0) == 0;
+}
+
+std::vector<const MergePart*> shards_in_order(const std::vector<MergePart>& parts, const std::string& schema,
                                               const std::vector<std::string>& same) {
+  for (const MergePart& p : parts)
+    if (p.doc.at("schema") != schema)
+      throw InputError(p.path + ": schema " + p.doc.at("schema").dump() + "; tritri merge reads " + schema);
   for (const MergePart& p : parts) {
     if (!p.doc.contains("shard"))
       throw InputError(p.path + ": not a shard (no \"shard\" field): a whole run, written without --shard");

@@ -33,11 +33,16 @@ const std::vector<MergeKind>& merge_kinds();
 const MergeKind& kind_of_parts(const std::vector<MergePart>& parts);
 
 // The shard fields every kind shares ("shard": {index, count, first_case, end_case,
-// total_cases}): the parts sorted by index, or an InputError when one is missing or given twice,
-// the ranges do not tile [0, total) in order, or the parts disagree on `same` (dotted key paths
-// whose values must be equal in every part).
-std::vector<const MergePart*> shards_in_order(const std::vector<MergePart>& parts,
+// total_cases}): the parts sorted by index, or an InputError when a part's schema is not `schema`
+// (the version the kind's merge reads), one is missing or given twice, the ranges do not tile
+// [0, total) in order, or the parts disagree on `same` (dotted key paths whose values must be
+// equal in every part).
+std::vector<const MergePart*> shards_in_order(const std::vector<MergePart>& parts, const std::string& schema,
                                               const std::vector<std::string>& same);
+
+// Whether `doc` is an object whose "schema" starts with `prefix` ("tritri-check/"): a kind's
+// `recognises`.
+bool schema_starts_with(const nlohmann::json& doc, const std::string& prefix);
 
 // The check JSON's merge (harness/check/check_output.hpp).
 nlohmann::json merge_check(const std::vector<MergePart>& parts);

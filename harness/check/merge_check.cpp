@@ -92,10 +92,7 @@ Json merged_failures(const std::vector<const MergePart*>& shards, const Json& al
 }  // namespace
 
 Json merge_check(const std::vector<MergePart>& parts) {
-  for (const MergePart& p : parts)
-    if (p.doc.at("schema") != kCheckSchema)
-      throw InputError(p.path + ": schema " + p.doc.at("schema").dump() + "; tritri merge reads " + kCheckSchema);
-  const auto shards = shards_in_order(parts, kSameInEveryShard);
+  const auto shards = shards_in_order(parts, kCheckSchema, kSameInEveryShard);
   try {
     Json doc = shards[0]->doc;
     doc.erase("shard");

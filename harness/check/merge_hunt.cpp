@@ -103,16 +103,10 @@ Json merged_algorithm(const std::vector<const Json*>& parts) {
 
 }  // namespace
 
-bool is_hunt(const Json& doc) {
-  return doc.is_object() && doc.contains("schema") && doc["schema"].is_string() &&
-         doc["schema"].get<std::string>().rfind("tritri-hunt/", 0) == 0;
-}
+bool is_hunt(const Json& doc) { return schema_starts_with(doc, "tritri-hunt/"); }
 
 Json merge_hunt(const std::vector<MergePart>& parts) {
-  for (const MergePart& p : parts)
-    if (p.doc.at("schema") != kHuntSchema)
-      throw InputError(p.path + ": schema " + p.doc.at("schema").dump() + "; tritri merge reads " + kHuntSchema);
-  const auto shards = shards_in_order(parts, kSameInEveryShard);
+  const auto shards = shards_in_order(parts, kHuntSchema, kSameInEveryShard);
   try {
     Json doc = shards[0]->doc;
     doc.erase("shard");
