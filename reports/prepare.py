@@ -6,6 +6,10 @@
   prepare.py steps STEPS.tsv OUT.json [--baseline-inputs TEXT --baseline-verdict TEXT]
   prepare.py groupings symmetry|sweeps   the `tritri check --group-by` specs the report reads, one a line
   prepare.py suites                      the papers' named suites: CASES <TAB> LABEL <TAB> RESULTS.json
+  prepare.py split CHECK.json WHICH=OUT.json...   (WHICH: symmetry, sweeps, family)
+                                         one check run grouped several ways, as the files the
+                                         report reads (each as if checked with its groupings alone;
+                                         family: as if not grouped, each case by its family= label)
 
 None of them reads a case: what the corpus holds, the report reads from `tritri check`'s JSON.
 Every JSON file is written beside its final name and renamed into place.
@@ -163,6 +167,27 @@ def steps(args):
     write_json(args.out, doc)
 
 
+GROUPINGS = {"symmetry": lambda: [groups.SYMMETRY_GROUPING], "sweeps": groups.sweep_groupings,
+             "family": lambda: [groups.FAMILY_GROUPING]}
+
+
+def grouping_specs(which):
+    return GROUPINGS[which]()
+
+
+def split(check_path, outputs):
+    with open(check_path, encoding="utf-8") as f:
+        check = json.load(f)
+    for spec in outputs:
+        which, _, out = spec.partition("=")
+        if which not in GROUPINGS or not out:
+            raise SystemExit("prepare.py split: '%s' is not WHICH=OUT.json, WHICH one of %s" % (spec, ", ".join(GROUPINGS)))
+        try:
+            write_json(out, groups.split_groupings(check, grouping_specs(which)))
+        except ValueError as e:
+            raise SystemExit("prepare.py split: %s: %s" % (check_path, e))
+
+
 def suites():
     """Each named suite a paper's published file asks to check, and how the paper groups it."""
     folders = sorted(os.listdir(published.ALGORITHMS_DIR))
@@ -195,17 +220,22 @@ def main(argv=None):
             else:
                 command.add_argument(a)
     g = sub.add_parser("groupings")
-    g.add_argument("which", choices=["symmetry", "sweeps"])
+    g.add_argument("which", choices=list(GROUPINGS))
     sub.add_parser("suites")
+    sp = sub.add_parser("split")
+    sp.add_argument("check")
+    sp.add_argument("outputs", nargs="+", metavar="WHICH=OUT.json")
     args = p.parse_args(argv)
     if args.what == "manifest":
         write_json(args.out, manifest(args.corpus_dir, args.seed, args.command))
     elif args.what == "provenance":
         provenance(args)
     elif args.what == "groupings":
-        print("\n".join([groups.SYMMETRY_GROUPING] if args.which == "symmetry" else groups.sweep_groupings()))
+        print("\n".join(grouping_specs(args.which)))
     elif args.what == "suites":
         suites()
+    elif args.what == "split":
+        split(args.check, args.outputs)
     else:
         steps(args)
     return 0

@@ -10,11 +10,35 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <optional>
 #include <ostream>
+#include <regex>
 #include <stdexcept>
 
 namespace tritri::bench {
 namespace {
+
+// --filter as Google Benchmark 1.7 reads it (POSIX extended syntax, matched anywhere in the name,
+// a leading '-' keeps the names that do not match), applied to the entries before they are
+// counted and registered: the plan's count of benchmarks and its time are then the run's.
+struct NameFilter {
+  explicit NameFilter(std::string spec) {
+    if (spec.empty() || spec == "all") return;
+    if (spec.front() == '-') {
+      negative = true;
+      spec.erase(0, 1);
+    }
+    try {
+      regex.emplace(spec, std::regex::extended);
+    } catch (const std::regex_error& e) {
+      throw std::invalid_argument("--filter: '" + spec + "' is not a regular expression (" + e.what() + ")");
+    }
+  }
+  bool keeps(const std::string& name) const { return !regex || std::regex_search(name, *regex) != negative; }
+
+  std::optional<std::regex> regex;
+  bool negative = false;
+};
 
 const Algorithm& reference_algorithm(const std::string& name) {
   const Algorithm* a = registry().find(name);
@@ -85,6 +109,7 @@ Options quick_options() {
 int run(const Options& options, std::ostream& out) {
   // ---- what to run ----
   if (options.modes.empty()) throw std::invalid_argument("no timing mode (call, batch) chosen");
+  const NameFilter filter(options.filter);
   const Lineup lineup = lineup_of(options, reference_algorithm(options.reference));
   std::vector<Level> levels = options.levels;
   if (levels.empty()) levels.assign(std::begin(kLevels), std::end(kLevels));
@@ -100,8 +125,9 @@ int run(const Options& options, std::ostream& out) {
 
   // ---- the entries: checked and counted before anything is timed ----
   CheckCache checks(options.cache, planned.cache_key, options, out);
-  const Entries entries = make_entries(planned.pools, lineup, levels, options, checks);
+  Entries entries = make_entries(planned.pools, lineup, levels, options, checks);
   checks.save(out);
+  std::erase_if(entries.timed, [&](const auto& e) { return !filter.keeps(e->name()); });
   report_untimed(entries.untimed, out);
 
   // ---- Google Benchmark ----

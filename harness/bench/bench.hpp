@@ -62,7 +62,7 @@ struct Options {
   double min_time = 0.1;         // seconds per repetition
   double min_warmup_time = 0.02; // seconds before each repetition
   bool interleave = true;        // random interleaving of the repetitions
-  std::string filter;            // Google Benchmark regex on the names; empty: all
+  std::string filter;            // regex on the names, as Google Benchmark reads it; empty: all
   std::string json_path;         // empty: no file
   // The case files of the family: workloads (their identity; the JSON records it) and how to
   // read them, called only when a pool is built from them (a cached pool needs only the

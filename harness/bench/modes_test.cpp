@@ -111,7 +111,9 @@ TEST(BenchModes, BothModesAreAnAxisOfEveryResultRatioAndFloorShare) {
     EXPECT_EQ(r["level"], "overlap");
     EXPECT_TRUE(r["stage"].is_null());
     seen.insert({r["algorithm"].get<std::string>(), mode});
-    if (r["algorithm"] == "moller97") EXPECT_DOUBLE_EQ(r["relative_to_reference"].get<double>(), 1.0) << mode;
+    if (r["algorithm"] == "moller97") {
+      EXPECT_DOUBLE_EQ(r["relative_to_reference"].get<double>(), 1.0) << mode;
+    }
   }
   for (const char* algo : {"floor", "null", "moller97", "guigue03"})
     for (const char* mode : {"call", "batch"}) EXPECT_TRUE(seen.count({algo, mode})) << algo << " " << mode;
@@ -127,6 +129,38 @@ TEST(BenchModes, BothModesAreAnAxisOfEveryResultRatioAndFloorShare) {
   EXPECT_EQ(t["harness"]["floors"], nlohmann::json::array({"floor", "null"}));
   EXPECT_NE(out.str().find("harness: floor 'null' in call mode"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("harness: floor 'null' in batch mode"), std::string::npos) << out.str();
+  std::filesystem::remove(path);
+}
+
+// The main job's default plan times the ratio pools in both modes and the rest in call mode
+// (scripts/run): the filter decides what is counted, planned and written, not only what runs.
+TEST(BenchModes, TheFilterChoosesModesPerWorkloadAndThePlanCountsWhatRuns) {
+  const auto path = scratch("filter");
+  std::ostringstream out;
+  Options o = small_run({registry().find("moller97")}, {Mode::call, Mode::batch}, path.string());
+  o.workloads = {"ratio:0.5", "type:point"};
+  o.filter = "ratio:|/call$";
+  ASSERT_EQ(run(o, out), 0) << out.str();
+  const auto doc = nlohmann::json::parse(std::ifstream(path));
+  std::set<std::pair<std::string, std::string>> seen;  // (pool, mode)
+  std::size_t results = 0;
+  for (const auto& r : doc["tritri"]["results"]) {
+    seen.insert({r["workload"].get<std::string>(), r["mode"].get<std::string>()});
+    ++results;
+  }
+  EXPECT_EQ(seen, (std::set<std::pair<std::string, std::string>>{
+                      {"ratio:0.50", "call"}, {"ratio:0.50", "batch"}, {"type:point", "call"}}));
+  // floor, null, moller97: both modes on the ratio pool, call mode on the other.
+  EXPECT_EQ(results, 9u);
+  EXPECT_NE(out.str().find("; 9 benchmarks, 1 repetitions each"), std::string::npos) << out.str();
+
+  o.filter = "-/batch$";  // a leading '-': every name it does not match
+  ASSERT_EQ(run(o, out), 0) << out.str();
+  for (const auto& r : nlohmann::json::parse(std::ifstream(path))["tritri"]["results"]) {
+    EXPECT_EQ(r["mode"], "call");
+  }
+  o.filter = "ratio:(";
+  EXPECT_THROW(run(o, out), std::invalid_argument);
   std::filesystem::remove(path);
 }
 

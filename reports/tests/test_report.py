@@ -573,6 +573,27 @@ class Modes(unittest.TestCase):
                 self.assertIn(words, body, (heading, words))
 
 
+    def test_pools_timed_in_one_mode_get_rows_for_that_mode_only(self):
+        # The main job's default plan times the families in call mode only (scripts/run).
+        out = tempfile.mkdtemp()
+        try:
+            fixture = os.path.join(out, "run")
+            shutil.copytree(FIXTURE, fixture)
+            bench = load("bench.json")
+            bench["tritri"]["results"] = [r for r in bench["tritri"]["results"]
+                                          if not (r["workload"].startswith("family:") and r.get("mode") == "batch")]
+            with open(os.path.join(fixture, "bench.json"), "w", encoding="utf-8") as f:
+                json.dump(bench, f)
+            text = report.Report(report.Run(fixture), os.path.join(out, "report")).build()
+        finally:
+            shutil.rmtree(out)
+        families = section(text, "3.2 Time on the corpus families")
+        self.assertIn("Timed in call mode only in this run.", families)
+        modes = {row[1] for _, rows in markdown.parse_tables(families) for row in rows}
+        self.assertEqual(modes, {"call"})
+        types = {row[1] for _, rows in tables_in(text, "3.1 Time per intersection type") for row in rows}
+        self.assertEqual(types, {"call", "batch"})
+
 class WebPeers(unittest.TestCase):
     """The web peers' section: their self-timed results over moller97 timed the same way, and their
     answers from check.json."""
@@ -620,6 +641,39 @@ class WebPeers(unittest.TestCase):
 
 
 class Groups(unittest.TestCase):
+    @staticmethod
+    def grouped_check(groupings, groups_and_cases):
+        tallies = [{"algorithm": "a", "family": g, "cases": n} for g, n in groups_and_cases]
+        return {"group_by": groupings, "families": [g for g, _ in groups_and_cases], "tallies": tallies,
+                "case_count": 5, "failures": []}
+
+    def test_one_grouped_check_splits_into_each_groupings_file(self):
+        check = self.grouped_check(
+            ["subsuite=symmetry,@base", "subsuite,tilt", "family"],
+            [("subsuite=symmetry @base=a.0", 3), ("subsuite=scale tilt=2^-3", 2), ("subsuite=symmetry tilt=2^-4", 1),
+             ("family=f", 2), ("family=g", 3)])
+        sym = groups.split_groupings(check, ["subsuite=symmetry,@base"])
+        self.assertEqual(sym["group_by"], ["subsuite=symmetry,@base"])
+        self.assertEqual(sym["families"], ["subsuite=symmetry @base=a.0"])
+        self.assertEqual([t["family"] for t in sym["tallies"]], ["subsuite=symmetry @base=a.0"])
+        tilt = groups.split_groupings(check, ["subsuite,tilt"])
+        self.assertEqual(tilt["families"], ["subsuite=scale tilt=2^-3", "subsuite=symmetry tilt=2^-4"])
+        # By family: as a check without --group-by names its tallies; the input is left as it was.
+        fam = groups.split_groupings(check, ["family"])
+        self.assertEqual((fam["group_by"], fam["families"]), ([], ["f", "g"]))
+        self.assertEqual([t["family"] for t in fam["tallies"]], ["f", "g"])
+        self.assertEqual(check["tallies"][3]["family"], "family=f")
+        with self.assertRaisesRegex(ValueError, "not grouped by subsuite,gap"):
+            groups.split_groupings(check, ["subsuite,gap"])
+
+    def test_a_family_split_is_refused_when_some_case_has_no_family_label(self):
+        check = self.grouped_check(["family"], [("family=f", 2), ("family=g", 2)])  # 4 of 5 cases
+        with self.assertRaisesRegex(ValueError, "not every case has a family= label"):
+            groups.split_groupings(check, ["family"])
+        self.assertFalse(groups.in_grouping("subsuite=scale tilt=2^-3", "subsuite=symmetry,tilt"))
+        self.assertFalse(groups.in_grouping("subsuite=scale", "subsuite,tilt"))
+        self.assertTrue(groups.in_grouping("subsuite=scale tilt=2^-3", "subsuite=scale,tilt"))
+
     def test_the_sweep_a_group_counts_for(self):
         self.assertEqual(groups.sweep_of("subsuite=scale transform=2^-7"), ("scale", "-7"))
         self.assertEqual(groups.sweep_of("subsuite=scale tilt=2^-20"), ("tilt", "-20"))

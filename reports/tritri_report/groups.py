@@ -36,6 +36,52 @@ def labels_of(group):
     return dict(field.partition("=")[::2] for field in group.split(" "))
 
 
+def in_grouping(group, spec):
+    """Whether `tritri check --group-by spec` names `group`: the same keys in the same order, and
+    the value each KEY=VALUE item asks for."""
+    fields = [f.partition("=") for f in group.split(" ")]
+    items = [i.partition("=") for i in spec.split(",")]
+    return len(fields) == len(items) and all(
+        f[0] == i[0] and (not i[1] or f[2] == i[2]) for f, i in zip(fields, items))
+
+
+def split_groupings(check, specs):
+    """The part of a grouped check's JSON that `specs` name: the same document, as if the check had
+    been asked for those groupings alone (one pass over the corpus can then serve several files)."""
+    missing = [s for s in specs if s not in check.get("group_by", [])]
+    if missing:
+        raise ValueError("the check was not grouped by %s (it was by %s)"
+                         % (", ".join(missing), ", ".join(check.get("group_by", [])) or "family"))
+    if check.get("failures"):
+        raise ValueError("a check with failures listed cannot be split by grouping (run it with --json-max-failures 0)")
+    keep = lambda group: any(in_grouping(group, s) for s in specs)  # noqa: E731
+    out = dict(check)
+    out["group_by"] = [s for s in check["group_by"] if s in specs]
+    out["families"] = [f for f in check.get("families", []) if keep(f)]
+    out["tallies"] = [dict(t) for t in check.get("tallies", []) if keep(t["family"])]
+    if specs == [FAMILY_GROUPING]:
+        _as_ungrouped(out)
+    return out
+
+
+FAMILY_GROUPING = "family"  # grouped by the family= label: an ungrouped check's tallies, when every case has one
+
+
+def _as_ungrouped(out):
+    """Groups "family=F" named "F", as a check without --group-by names them; refused unless every
+    case is in one (a case without the label is tallied by its file's name there)."""
+    out["group_by"] = []
+    out["families"] = [labels_of(f)["family"] for f in out["families"]]
+    cases = Counter()
+    for t in out["tallies"]:
+        t["family"] = labels_of(t["family"])["family"]
+        cases[t["algorithm"]] += t["cases"]
+    short = {a: n for a, n in cases.items() if n != out.get("case_count")}
+    if short:
+        raise ValueError("not every case has a family= label (%s: %d of %s cases)"
+                         % (next(iter(short)), next(iter(short.values())), out.get("case_count")))
+
+
 def _transform_sweep(subsuite, transform):
     if subsuite == "symmetry" and transform == IDENTITY:
         return "exact", "identity"

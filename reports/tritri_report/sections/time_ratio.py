@@ -122,10 +122,14 @@ def other_workloads(run, part):
     """The type and family pools: what each kind of contact, and singular input, costs."""
     levels = data.primary_levels(run.bench)
     for prefix, title, intro in OTHER_WORKLOADS:
-        workloads = []
+        workloads, timed_modes = [], set()
         for r in data.bench_results(run.bench):
-            if r["workload"].startswith(prefix) and r["workload"] not in workloads:
-                workloads.append(r["workload"])
+            if r["workload"].startswith(prefix):
+                timed_modes.add(data.mode_of(r))
+                if r["workload"] not in workloads:
+                    workloads.append(r["workload"])
+        # The main job's default plan times these pools in one mode only (scripts/run): no rows of dashes.
+        modes = [m for m in run.modes if m in timed_modes]
         part.heading(title)
         if not workloads:
             part.add("%s.\n" % NOT_MEASURED)
@@ -133,7 +137,9 @@ def other_workloads(run, part):
         if "%s" in intro:
             intro = intro % ((run.bench.get("context") or {}).get("family_source", "the corpus generator's"))
         rows = [[a, mode] + [workload_cell(run, a, level, w, mode, prefix) for w in workloads]
-                for a, level in levels.items() if a != data.HARNESS_FLOOR for mode in run.modes]
+                for a, level in levels.items() if a != data.HARNESS_FLOOR for mode in modes]
+        if len(modes) < len(run.modes):
+            intro += " Timed in %s only in this run." % " and ".join("%s mode" % m for m in modes)
         part.add(intro + "\n")
         part.add(table(["algorithm", "mode"] + [w.split(":", 1)[1] for w in workloads], rows))
 
