@@ -40,6 +40,13 @@ inline V3 upward(Rng& rng, int reach = 6) {
   return v3(x, y, z);
 }
 
+// A random integer vector off the plane z = 0, above or below it.
+inline V3 off_plane(Rng& rng) {
+  V3 r = upward(rng, 10);
+  if (rng.sign() < 0) r.z() = -r.z();
+  return r;
+}
+
 // A random non-zero integer vector in the plane z = 0.
 inline V3 in_plane(Rng& rng, int reach = 6) {
   for (;;) {

@@ -16,6 +16,9 @@ using V3 = Vec3<double>;
 
 inline V3 v3(double x, double y, double z) { return V3(x, y, z); }
 
+// A swept label's value, as the report reads it back (reports/tritri_report/groups.py): "2^k".
+inline std::string power_of_two(int k) { return "2^" + std::to_string(k); }
+
 // Affine bijections preserve every relation in the vocabulary (incidence, coplanarity,
 // parallelism, relative interiors), so a canonical construction can be moved by any of them
 // without changing its answer, as long as the arithmetic stays exact: see apply_exactly().

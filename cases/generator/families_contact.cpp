@@ -261,12 +261,6 @@ Construction edge_crossing_beyond(Rng& rng) {
 
 // ---- 7. edge-on-face --------------------------------------------------------------------
 
-V3 off_plane(Rng& rng) {
-  V3 r = upward(rng, 10);
-  if (rng.sign() < 0) r.z() = -r.z();
-  return r;
-}
-
 Construction edge_on_face_inside(Rng& rng) {
   const Triangle t = canonical_t1(rng);
   const V3 p = interior_point(rng, t), q = interior_point(rng, t), r = off_plane(rng);

@@ -103,8 +103,6 @@ Construction overlap_random(Rng& rng) {
 // ---- 10. coplanar-disjoint --------------------------------------------------------------
 // T1 lies in y >= 0 with edge AB on y = 0; T2 lies in y <= -gap.
 
-std::string power_of_two(int k) { return "2^" + std::to_string(k); }
-
 int gap_exponent(Rng& rng) { return rng.between(-40, 3); }
 
 Construction apart_by(const Triangle& t, double gap, bool edge_parallel, Rng& rng) {

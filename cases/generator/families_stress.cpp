@@ -12,14 +12,6 @@ namespace {
 
 using R = Relation;
 
-std::string power_of_two(int k) { return "2^" + std::to_string(k); }
-
-V3 off_plane(Rng& rng) {
-  V3 r = upward(rng, 10);
-  if (rng.sign() < 0) r.z() = -r.z();
-  return r;
-}
-
 // ---- 12. near-coplanar ------------------------------------------------------------------
 // T2 is built in T1's plane and then tilted about the line y = y0 by z = s·(y - y0), s = ±2^-k:
 // a slope from about 1e-1 down to 1e-15 (the angle is atan(2^-k)), exact in double because s
