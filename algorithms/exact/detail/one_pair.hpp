@@ -68,6 +68,48 @@ inline double one_pair_bound(const double* c) {
   return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
 }
 
+// The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
+// and maxima by `<` / `>`, as one_pair_bound).
+struct Box {
+  Double2 lo, hi;
+  double lo_z, hi_z;
+};
+inline Box box_of(const double* t) {
+  Box b;
+  std::memcpy(&b.lo, t, sizeof b.lo);
+  b.hi = b.lo;
+  b.lo_z = b.hi_z = t[2];
+  for (int v = 1; v < 3; ++v) {
+    Double2 p;
+    std::memcpy(&p, t + 3 * v, sizeof p);
+    b.lo = p < b.lo ? p : b.lo;
+    b.hi = p > b.hi ? p : b.hi;
+    b.lo_z = t[3 * v + 2] < b.lo_z ? t[3 * v + 2] : b.lo_z;
+    b.hi_z = t[3 * v + 2] > b.hi_z ? t[3 * v + 2] : b.hi_z;
+  }
+  return b;
+}
+
+// The pair's bound from its two boxes: one_pair_bound's value (the union's extents), +inf unless
+// every extent is at most kMax3.
+inline double bound_of_boxes(const Box& a, const Box& b) {
+  const Double2 lo = b.lo < a.lo ? b.lo : a.lo, hi = b.hi > a.hi ? b.hi : a.hi;
+  const Double2 e = hi - lo;
+  const double ex = e[0], ey = e[1];
+  const double ez = (b.hi_z > a.hi_z ? b.hi_z : a.hi_z) - (b.lo_z < a.lo_z ? b.lo_z : a.lo_z);
+  if (!(ex <= bound::kMax3 && ey <= bound::kMax3 && ez <= bound::kMax3)) return __builtin_inf();
+  return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
+}
+
+// The boxes are disjoint along some axis (comparisons only, hence exact for finite coordinates).
+inline bool boxes_apart(const Box& a, const Box& b) {
+  using L2 = long long __attribute__((vector_size(16)));
+  const L2 apart = (a.hi < b.lo) | (b.hi < a.lo);
+  return ((apart[0] | apart[1]) != 0) | (a.hi_z < b.lo_z) | (b.hi_z < a.lo_z);
+}
+
+inline bool finite18(const double* c);  // below
+
 // Bits of the certainly positive (pos) and certainly negative (neg) values among three.
 inline unsigned above(const double s[3], double b) { return (s[0] > b) | (s[1] > b) << 1 | (s[2] > b) << 2; }
 inline unsigned below(const double s[3], double b) { return (s[0] < -b) | (s[1] < -b) << 1 | (s[2] < -b) << 2; }
@@ -107,7 +149,16 @@ inline bool certainly_slanted(const double s[3], double b) {
 // values and the bound).
 template <bool kRelation>
 [[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
-  const double b = one_pair_bound(c);
+  double b;
+  if constexpr (!kRelation) {
+    // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
+    // answer could be `parallel` or `degenerate`, so there the bound comes first.
+    const Box b1 = box_of(c), b2 = box_of(c + 9);
+    if (boxes_apart(b1, b2) && finite18(c)) return 0;
+    b = bound_of_boxes(b1, b2);
+  } else {
+    b = one_pair_bound(c);
+  }
   ps.bound = b;
   plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
   const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
