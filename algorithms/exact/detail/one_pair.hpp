@@ -2,6 +2,8 @@
 // pair, in Guigue–Devillers' order with their early exits, then the shared-vertex and shared-edge
 // shortcuts, then the exact scalar classification (scalar.hpp) for whatever is left.
 //
+//   boxes     overlap level: the vertices' boxes apart along an axis (and finite input) ->
+//             disjoint, exactly, before any arithmetic;
 //   filter    one semi-static bound B for the pair (the extents of its six points, as the
 //             kernel's pair_bound; algorithms/exact/README.md, "Shared bounds"), then
 //             step 1: T1's signs against π2; all certain and equal -> disjoint (overlap level);
@@ -12,7 +14,11 @@
 //   shared    exact coordinate equality of vertices (finite input only): at the overlap level a
 //             shared vertex is a common point; at the relation level the filter's signs decide a
 //             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
-// Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call".
+//   exact     the six plane signs made exact (the grid test once, else the per-call filters and
+//             the integer engine); crossing and one-sided pairs decided from them with the
+//             pair's bound for G1, G2; coplanar and degenerate pairs by the classification.
+// Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call" and
+// "Exact signs after the filter".
 #pragma once
 
 #include "algorithms/exact/detail/scalar.hpp"
