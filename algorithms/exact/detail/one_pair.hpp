@@ -2,6 +2,8 @@
 // pair, in Guigue–Devillers' order with their early exits, then the shared-vertex and shared-edge
 // shortcuts, then the exact scalar classification (scalar.hpp) for whatever is left.
 //
+//   boxes     overlap level: the vertices' boxes apart along an axis (and finite input) ->
+//             disjoint, exactly, before any arithmetic;
 //   filter    one semi-static bound B for the pair (the extents of its six points, as the
 //             kernel's pair_bound; algorithms/exact/README.md, "Shared bounds"), then
 //             step 1: T1's signs against π2; all certain and equal -> disjoint (overlap level);
@@ -12,7 +14,11 @@
 //   shared    exact coordinate equality of vertices (finite input only): at the overlap level a
 //             shared vertex is a common point; at the relation level the filter's signs decide a
 //             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
-// Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call".
+//   exact     the six plane signs made exact (the grid test once, else the per-call filters and
+//             the integer engine); crossing and one-sided pairs decided from them with the
+//             pair's bound for G1, G2; coplanar and degenerate pairs by the classification.
+// Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call" and
+// "Exact signs after the filter".
 #pragma once
 
 #include "algorithms/exact/detail/scalar.hpp"
@@ -68,6 +74,48 @@ inline double one_pair_bound(const double* c) {
   return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
 }
 
+// The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
+// and maxima by `<` / `>`, as one_pair_bound).
+struct Box {
+  Double2 lo, hi;
+  double lo_z, hi_z;
+};
+inline Box box_of(const double* t) {
+  Box b;
+  std::memcpy(&b.lo, t, sizeof b.lo);
+  b.hi = b.lo;
+  b.lo_z = b.hi_z = t[2];
+  for (int v = 1; v < 3; ++v) {
+    Double2 p;
+    std::memcpy(&p, t + 3 * v, sizeof p);
+    b.lo = p < b.lo ? p : b.lo;
+    b.hi = p > b.hi ? p : b.hi;
+    b.lo_z = t[3 * v + 2] < b.lo_z ? t[3 * v + 2] : b.lo_z;
+    b.hi_z = t[3 * v + 2] > b.hi_z ? t[3 * v + 2] : b.hi_z;
+  }
+  return b;
+}
+
+// The pair's bound from its two boxes: one_pair_bound's value (the union's extents), +inf unless
+// every extent is at most kMax3.
+inline double bound_of_boxes(const Box& a, const Box& b) {
+  const Double2 lo = b.lo < a.lo ? b.lo : a.lo, hi = b.hi > a.hi ? b.hi : a.hi;
+  const Double2 e = hi - lo;
+  const double ex = e[0], ey = e[1];
+  const double ez = (b.hi_z > a.hi_z ? b.hi_z : a.hi_z) - (b.lo_z < a.lo_z ? b.lo_z : a.lo_z);
+  if (!(ex <= bound::kMax3 && ey <= bound::kMax3 && ez <= bound::kMax3)) return __builtin_inf();
+  return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
+}
+
+// The boxes are disjoint along some axis (comparisons only, hence exact for finite coordinates).
+inline bool boxes_apart(const Box& a, const Box& b) {
+  using L2 = long long __attribute__((vector_size(16)));
+  const L2 apart = (a.hi < b.lo) | (b.hi < a.lo);
+  return ((apart[0] | apart[1]) != 0) | (a.hi_z < b.lo_z) | (b.hi_z < a.lo_z);
+}
+
+inline bool finite18(const double* c);  // below
+
 // Bits of the certainly positive (pos) and certainly negative (neg) values among three.
 inline unsigned above(const double s[3], double b) { return (s[0] > b) | (s[1] > b) << 1 | (s[2] > b) << 2; }
 inline unsigned below(const double s[3], double b) { return (s[0] < -b) | (s[1] < -b) << 1 | (s[2] < -b) << 2; }
@@ -107,7 +155,16 @@ inline bool certainly_slanted(const double s[3], double b) {
 // values and the bound).
 template <bool kRelation>
 [[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
-  const double b = one_pair_bound(c);
+  double b;
+  if constexpr (!kRelation) {
+    // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
+    // answer could be `parallel` or `degenerate`, so there the bound comes first.
+    const Box b1 = box_of(c), b2 = box_of(c + 9);
+    if (boxes_apart(b1, b2) && finite18(c)) return 0;
+    b = bound_of_boxes(b1, b2);
+  } else {
+    b = one_pair_bound(c);
+  }
   ps.bound = b;
   plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
   const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
@@ -130,21 +187,32 @@ template <bool kRelation>
   return (g1 < -b) & (g2 < -b) ? 1 : -1;
 }
 
-// All 18 coordinates finite: x - x is 0 for finite x and NaN otherwise.
-inline bool finite18(const double* c) {
-  double z = 0.0;
-  for (int i = 0; i < 18; ++i) z += c[i] - c[i];
-  return z == 0.0;
+// Two 64-bit integers in one register: the lane masks of Double2 comparisons (all bits set = true).
+using Long2 = long long __attribute__((vector_size(16)));
+
+// The 18 coordinates as 9 Double2 (in memory order: the pairing does not matter to the callers).
+inline void load9(const double* c, Double2 (&v)[9]) {
+  for (int i = 0; i < 9; ++i) std::memcpy(&v[i], c + 2 * i, sizeof v[i]);
 }
 
-// Bit 3i + j: T1's vertex i equals T2's vertex j (exact comparison of the coordinates).
+// All 18 coordinates finite: x - x is 0 for finite x and NaN otherwise, and a sum with a NaN is NaN.
+inline bool finite18(const double* c) {
+  Double2 v[9];
+  load9(c, v);
+  Double2 z = v[0] - v[0];
+  for (int i = 1; i < 9; ++i) z += v[i] - v[i];
+  return (z[0] + z[1]) == 0.0;
+}
+
+// Bit 3i + j: T1's vertex i equals T2's vertex j (exact comparison of the coordinates: -0 equals +0).
 inline unsigned shared_vertices(const double* c) {
+  Double2 xy[6];
+  for (int v = 0; v < 6; ++v) std::memcpy(&xy[v], c + 3 * v, sizeof xy[v]);
   unsigned bits = 0;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
-      const double* a = c + 3 * i;
-      const double* d = c + 9 + 3 * j;
-      bits |= static_cast<unsigned>((a[0] == d[0]) & (a[1] == d[1]) & (a[2] == d[2])) << (3 * i + j);
+      const Long2 e = xy[i] == xy[3 + j];
+      bits |= static_cast<unsigned>(((e[0] & e[1]) != 0) & (c[3 * i + 2] == c[9 + 3 * j + 2])) << (3 * i + j);
     }
   return bits;
 }
@@ -180,40 +248,113 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // C = 1.5·2^(q+52) built from m's exponent bits (algorithms/exact/README.md, "The grid case (pass 2
 // and `Plain`)"). Then every value the filter computed is exact.
 inline bool on_grid(const double* c) {
-  double m = 0.0;
-  for (int i = 0; i < 18; ++i) m = dmax(m, std::fabs(c[i]));
+  Double2 v[9];
+  load9(c, v);
+  const Long2 no_sign = {0x7fffffffffffffffll, 0x7fffffffffffffffll};
+  Double2 m2 = {0.0, 0.0};
+  for (int i = 0; i < 9; ++i) {
+    const Double2 a = reinterpret_cast<Double2>(reinterpret_cast<Long2>(v[i]) & no_sign);  // |x|
+    m2 = a > m2 ? a : m2;
+  }
+  const double m = dmax(m2[0], m2[1]);
   if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
   std::uint64_t bits;
   std::memcpy(&bits, &m, sizeof bits);
   bits = ((bits & 0x7ff0000000000000ull) + (38ull << 52)) | (1ull << 51);
   double big;
   std::memcpy(&big, &bits, sizeof big);
-  bool grid = true;
-  for (int i = 0; i < 18; ++i) grid &= (c[i] + big) - big == c[i];
-  return grid;
+  const Double2 big2 = {big, big};
+  Long2 grid = (v[0] + big2) - big2 == v[0];
+  for (int i = 1; i < 9; ++i) grid &= (v[i] + big2) - big2 == v[i];
+  return (grid[0] & grid[1]) != 0;
 }
 
-// After an undecided filter: the shortcuts, then the classification (`grid`: the pair is known to
-// pass grid_exact, so plain double is exact for it). At the overlap level only the emptiness of
-// the answer counts (classify.hpp).
+// The pair's grid test, evaluated at most once per pair and only when a value within the bound
+// needs it (`state`: -1 not yet known, 0 off the grid, 1 on it).
+struct LazyGrid {
+  const double* c;
+  int state;
+  bool on() {
+    if (state < 0) state = on_grid(c) ? 1 : 0;
+    return state != 0;
+  }
+};
+
+// The exact sign of o3(a, b, cc, d), given a value `v` of it evaluated in det3_eval's shape on
+// four of the pair's six (finite) points and the pair's bound, valid for every such value
+// (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on the
+// grid the value is exact ("The grid case"); else the per-call filters and the integer engine.
+inline int sign_o3(double v, double bound, LazyGrid& g, P a, P b, P cc, P d) {
+  if (v > bound) return 1;
+  if (v < -bound) return -1;
+  if (g.on()) return sgn(v);
+  return Filtered::o3(a, b, cc, d);
+}
+
+// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
+// proper, neither sign triple one-sided nor all zero; G1 and G2 against the pair's bound first.
+template <bool kRelation>
+Relation crossing_known(const double* c, const int s1[3], const int s2[3], double bound, LazyGrid& g) {
+  int l1, f1, l2, f2;
+  lone_vertex(s1, l1, f1);
+  lone_vertex(s2, l2, f2);
+  P p1 = c + 3 * l1, q1 = c + 3 * ((l1 + 1) % 3), r1 = c + 3 * ((l1 + 2) % 3);
+  P p2 = c + 9 + 3 * l2, q2 = c + 9 + 3 * ((l2 + 1) % 3), r2 = c + 9 + 3 * ((l2 + 2) % 3);
+  if (f2 < 0) std::swap(q1, r1);  // flips π1 so that p2 is on its positive side
+  if (f1 < 0) std::swap(q2, r2);  // flips π2 so that p1 is on its positive side
+  const int g1 = sign_o3(det3_eval(p1, q1, p1, p2, p1, q2).value, bound, g, p1, q1, p2, q2);
+  if (g1 > 0) return Relation::disjoint;
+  const int g2 = sign_o3(det3_eval(p1, r1, p1, r2, p1, p2).value, bound, g, p1, r1, r2, p2);
+  if (g2 > 0) return Relation::disjoint;
+  if (!kRelation) return Relation::cross;  // meets
+  if (g1 == 0 || g2 == 0 || s1[l1] == 0 || s2[l2] == 0) return Relation::touch_point;
+  return (zero_count(s1) == 2 || zero_count(s2) == 2) ? Relation::touch_segment : Relation::cross;
+}
+
+// After an undecided filter (`grid`: the pair is known to pass the grid test, so plain double is
+// exact for it): non-finite input is declined; then the shared-vertex shortcuts; then the six
+// plane signs made exact (the filter's certain ones kept, the others resolved one by one) and,
+// when both triangles have a non-zero sign against the other's plane, one-sided or crossing
+// decided here; the rest (coplanar, degenerate, parallel candidates) by the classification with
+// those signs. Each step is proved in algorithms/exact/README.md, "Exact signs after the filter".
+// At the overlap level only the emptiness of the answer counts (classify.hpp).
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
-  if (const unsigned bits = shared_vertices(c); bits != 0u && finite18(c)) {
+  if (!finite18(c)) return solve<kRelation>(pair, route);  // declines
+  if (const unsigned bits = shared_vertices(c); bits != 0u) {
     const Relation rel = kRelation ? shared_relation(bits, ps) : Relation::touch_point;  // a common point
     if (rel != Relation::unsupported) {
       if (route) *route = Route::shared;
       return answer_with(rel);
     }
   }
-  if (!grid && !on_grid(c)) return solve<kRelation>(pair, route);
-  if (route) *route = Route::grid;
+  LazyGrid g{c, grid ? 1 : -1};
+  const double b = ps.bound;
+  int known[6];
+  for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, c + 9, c + 12, c + 15, c + 3 * k);
+  const bool any1 = (known[0] | known[1] | known[2]) != 0;
+  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
+  // the classification reads s2 only when both are proper, so zeros are its exact signs
+  for (int k = 0; k < 3; ++k) known[3 + k] = any1 ? sign_o3(ps.s2[k], b, g, c, c + 3, c + 6, c + 9 + 3 * k) : 0;
+  const bool any2 = (known[3] | known[4] | known[5]) != 0;
+  if (any1 & any2) {  // both triangles proper, the planes distinct
+    const bool one1 = one_sided(known), one2 = one_sided(known + 3);
+    if (!(one1 | one2) || !kRelation || !(one1 & one2)) {
+      if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
+      if (one1 | one2) return answer_with(Relation::disjoint);  // parallel planes: both one-sided
+      return answer_with(crossing_known<kRelation>(c, known, known + 3, b, g));
+    }
+  }
   Tri t1, t2;
   double unused[18];
   gather(pair, t1, t2, unused);
-  // on the grid the filter's values are exact: their signs are the plane signs
-  const int known[6] = {sgn(ps.s1[0]), sgn(ps.s1[1]), sgn(ps.s1[2]), sgn(ps.s2[0]), sgn(ps.s2[1]), sgn(ps.s2[2])};
-  return classify<Plain, kRelation>(t1, t2, known);
+  if (g.on()) {
+    if (route) *route = Route::grid;
+    return classify<Plain, kRelation>(t1, t2, known);
+  }
+  if (route) *route = Route::filtered;
+  return classify<Filtered, kRelation>(t1, t2, known);
 }
 
 // One pair: the filter, then `finish`.

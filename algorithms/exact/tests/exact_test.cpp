@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -626,6 +627,64 @@ TEST(Classify, NonFiniteInputIsDeclined) {
       EXPECT_EQ(rel[i].relation, bad ? Relation::unsupported : Relation::cross) << i;
     }
   }
+}
+
+// The one-pair path's shortcuts (algorithms/exact/README.md, "One pair per call" and "Exact signs
+// after the filter") at their edges.
+TEST(OnePair, BoxRejectionDeclinesNonFiniteInput) {
+  // boxes apart along x; a NaN or an infinity anywhere must still be declined: the box's
+  // minima and maxima skip a NaN that is not first, so the exit needs its own finiteness check
+  const TrianglePair apart{kFloor, tri({10, 0, 0}, {14, 0, 0}, {10, 4, 1})};
+  ASSERT_EQ(ex::overlap(apart), Overlap::no);
+  for (int k = 0; k < 18; ++k)
+    for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+      TrianglePair p = apart;
+      (k < 9 ? p.t1[k / 3] : p.t2[(k - 9) / 3])[k % 3] = bad;
+      EXPECT_EQ(ex::overlap(p), Overlap::unsupported) << k << " " << bad;
+      EXPECT_EQ(ex::relation(p).relation, Relation::unsupported) << k << " " << bad;
+    }
+}
+
+TEST(OnePair, BoxesApartAtTheRelationLevelStillNameTheRelation) {
+  // apart boxes answer the overlap level only: the relation may be parallel or degenerate
+  std::vector<TrianglePair> pairs = {
+      {kFloor, tri({10, 0, 1}, {14, 0, 1}, {10, 4, 1})},  // parallel
+      {kFloor, tri({10, 0, 0}, {14, 0, 0}, {12, 0, 0})},  // a segment (degenerate)
+      {kFloor, tri({10, 0, 0}, {14, 0, 0}, {10, 4, 0})},  // coplanar, disjoint
+  };
+  std::vector<TrianglePair> all;
+  for (const auto& p : pairs)
+    for (const auto& v : all_orders(p)) all.push_back(v);
+  expect_all_paths_agree(all, "boxes apart");
+}
+
+TEST(OnePair, ExactSignsAfterTheFilterAtTheirEdges) {
+  // every branch case with signed zeros, at the edges of the filter's range (extents about
+  // 2^333: the bound is finite on one side, +inf on the other, so every sign goes through the
+  // exact resolution) and off the grid with a touching vertex; plus pairs whose zero signs make
+  // one triangle one-sided only weakly
+  std::vector<TrianglePair> base;
+  for (const Named& c : branch_cases()) base.push_back(c.pair);
+  base.push_back({kFloor, tri({5, 5, 0}, {5, 6, 1}, {6, 5, 1})});     // a vertex on π1, outside T1
+  base.push_back({kFloor, tri({0, 0, 1}, {1, 0, 1}, {0, 1, 2})});     // T2 one-sided, T1 not
+  base.push_back({kFloor, tri({4, 4, 0}, {5, 4, 1}, {4, 5, 1})});     // touches π1 beyond the hypotenuse
+  base.push_back({kFloor, tri({2, 2, 0}, {2, 2, 1}, {3, 2, -1})});    // a vertex on the hypotenuse
+  base.push_back({kFloor, tri({0, 0, -0.0}, {4, 0, 0}, {1, -1, 2})}); // a hinge with a signed zero
+  std::vector<TrianglePair> moved;
+  for (const auto& b : base)
+    for (const auto& v : all_orders(b)) {
+      TrianglePair neg = v;  // every zero coordinate negative
+      for (Triangle* t : {&neg.t1, &neg.t2})
+        for (auto& w : t->v)
+          for (int k = 0; k < 3; ++k)
+            if (w[k] == 0.0) w[k] = -0.0;
+      moved.push_back(neg);
+      moved.push_back(scaled(v, 329));
+      moved.push_back(scaled(v, 331));
+      moved.push_back(scaled(v, -330));
+      moved.push_back(translated(scaled(v, -3), V(0.1, 1.0 / 3.0, 0.7)));
+    }
+  expect_all_paths_agree(moved, "exact signs at their edges");
 }
 
 // ---------------------------------------------------------------- the paths of the batch
