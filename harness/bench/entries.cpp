@@ -125,10 +125,20 @@ CounterList path_counters(const Algorithm& a, Level level, const Pool& pool) {
   return list;
 }
 
+// The levels `a` is timed at on `pool`: each asked for that it answers, or, where the pool's
+// query asks one level, the lowest of those that answers the query (a relation or a segment
+// answers whether the triangles meet).
+std::vector<Level> timed_levels(const Algorithm& a, const Pool& pool, const std::vector<Level>& levels) {
+  std::vector<Level> out;
+  for (Level level : levels)
+    if (a.answers(level) && (!pool.query || level >= *pool.query)) out.push_back(level);
+  if (pool.query && out.size() > 1) out.assign(1, *std::min_element(out.begin(), out.end()));
+  return out;
+}
+
 void level_entries(const Algorithm* a, const Pool& pool, const Lineup& lineup, const std::vector<Level>& levels,
                    const Options& options, CheckCache& checks, Entries& entries) {
-  for (Level level : levels) {
-    if (!a->answers(level)) continue;
+  for (Level level : timed_levels(*a, pool, levels)) {
     auto e = new_entry(a, level, pool);
     e->floor = lineup.is_floor(a);
     if (const CachedCheck* done = checks.find(e->name())) {

@@ -156,11 +156,36 @@ TEST(BenchModes, TheFilterChoosesModesPerWorkloadAndThePlanCountsWhatRuns) {
 
   o.filter = "-/batch$";  // a leading '-': every name it does not match
   ASSERT_EQ(run(o, out), 0) << out.str();
-  for (const auto& r : nlohmann::json::parse(std::ifstream(path))["tritri"]["results"]) {
-    EXPECT_EQ(r["mode"], "call");
-  }
+  const auto calls = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_EQ(calls["tritri"]["results"].size(), 6u);  // floor, null, moller97 on both pools
+  for (const auto& r : calls["tritri"]["results"]) EXPECT_EQ(r["mode"], "call");
   o.filter = "ratio:(";
   EXPECT_THROW(run(o, out), std::invalid_argument);
+  std::filesystem::remove(path);
+}
+
+// A scene's pools ask one question each: every algorithm is timed at that level only, or, when
+// it does not answer it, at the lowest level asked for that does (a relation says whether they meet).
+TEST(BenchModes, EachScenePoolIsTimedAtTheLevelItsQueryAsks) {
+  const auto path = scratch("scene-levels");
+  std::ostringstream out;
+  Options o = small_run({registry().find("moller97-segment"), registry().find("yuhe13")}, {Mode::batch}, path.string());
+  o.workloads = {"scene:box_stack/bv:OBB", "scene:spindle_self/bv:OBB"};
+  o.levels = {Level::overlap, Level::relation, Level::segment};
+  ASSERT_EQ(run(o, out), 0) << out.str();
+  std::map<std::string, std::set<std::string>> levels;  // algorithm pool -> levels timed
+  const auto doc = nlohmann::json::parse(std::ifstream(path));
+  for (const auto& r : doc["tritri"]["results"])
+    levels[r["algorithm"].get<std::string>() + " " + r["workload"].get<std::string>()].insert(r["level"].get<std::string>());
+  using Set = std::set<std::string>;
+  for (const char* pool : {"scene:box_stack/bv:OBB", "scene-shuffled:box_stack/bv:OBB", "scene-any:box_stack/bv:OBB"}) {
+    EXPECT_EQ(levels[std::string("moller97-segment ") + pool], Set{"overlap"}) << pool;
+    EXPECT_EQ(levels[std::string("yuhe13 ") + pool], Set{"relation"}) << pool;
+  }
+  for (const char* pool : {"scene:spindle_self/bv:OBB", "scene-shuffled:spindle_self/bv:OBB"}) {
+    EXPECT_EQ(levels[std::string("moller97-segment ") + pool], Set{"segment"}) << pool;
+    EXPECT_EQ(levels[std::string("yuhe13 ") + pool], Set{"segment"}) << pool;
+  }
   std::filesystem::remove(path);
 }
 

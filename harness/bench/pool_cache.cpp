@@ -42,7 +42,7 @@ std::vector<TrianglePair> pairs_of(const std::vector<double>& xs) {
   return out;
 }
 
-constexpr char kMagic[] = "tritri-pool-cache/2\n";
+constexpr char kMagic[] = "tritri-pool-cache/3\n";  // 3: a pool's query level
 
 // ---- a flat byte encoding: lengths as 64-bit words, in this machine's byte order (the cache
 // is this machine's) ----
@@ -87,7 +87,8 @@ std::string encode(const Planned& planned) {
     put_string(out, p.pool.workload);
     put_string(out, p.pool.value);
     put_u64(out, p.pool.seed);
-    put_u64(out, (p.levels ? 1u : 0u) | (p.stages ? 2u : 0u));
+    const std::uint64_t query = p.pool.query ? 1u + static_cast<unsigned>(*p.pool.query) : 0u;
+    put_u64(out, (p.levels ? 1u : 0u) | (p.stages ? 2u : 0u) | query << 2);
     const auto xs = coordinates(p.pool.pairs);
     put_bytes(out, xs.data(), xs.size() * sizeof(double));
     put_bytes(out, p.pool.truth.data(), p.pool.truth.size() * sizeof(Truth));
@@ -112,6 +113,10 @@ Planned decode(std::string_view payload) {
     const std::uint64_t flags = r.u64();
     p.levels = flags & 1u;
     p.stages = flags & 2u;
+    if (const std::uint64_t query = flags >> 2; query > 0) {
+      if (query > 1u + static_cast<unsigned>(Level::segment)) throw std::runtime_error("unknown query level");
+      p.pool.query = static_cast<Level>(query - 1u);
+    }
     p.pool.pairs = pairs_of(r.array<double>());
     p.pool.truth = r.array<Truth>();
     if (p.pool.pairs.size() != p.pool.truth.size()) throw std::runtime_error("pairs and labels differ in number");

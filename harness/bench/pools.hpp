@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -32,6 +33,10 @@ struct Pool {
   std::uint64_t seed = 0;
   std::vector<TrianglePair> pairs;
   std::vector<Truth> truth;  // one per pair
+  // The one level the pool's query asks (a scene's: overlap for its contacts, segment for a self
+  // scene's intersection curve): each algorithm is timed there only (entries.cpp). None: at
+  // every level asked for.
+  std::optional<Level> query;
 
   std::string name() const { return workload + ":" + value; }
   std::size_t size() const { return pairs.size(); }
