@@ -5,8 +5,9 @@
 //              cases/oracle/oracle.hpp): closed triangles (touching counts), Yu–He's
 //              relation codes, zero-area triangles judged as their point/segment hulls and
 //              answered {Relation::degenerate, dimension}. Non-finite input: unsupported.
-//   Batch      overlap_batch / relation_batch: pairs are evaluated W at a time (SSE2: 2, AVX2:
-//              4, AVX-512: 8 lanes, picked at run time) without branches on the data: the six
+//   Batch      overlap_batch / relation_batch: pairs are evaluated W at a time on the lane layer
+//              (algorithms/lanes: SSE2 2, AVX2 4, AVX-512 8, NEON 2 lanes, picked at run time as
+//              for every lane algorithm, TRITRI_ISA) without branches on the data: the six
 //              plane signs, Guigue–Devillers' two interval signs, each certain when its value
 //              exceeds the pair's semi-static bound. Undecided lanes (a sign within the bound:
 //              touching, coplanar, degenerate, near-singular, or magnitudes outside the
@@ -24,51 +25,33 @@
 #pragma once
 
 #include "algorithms/exact/detail/one_pair.hpp"
-#include "algorithms/exact/detail/simd.hpp"
+#include "algorithms/lanes/isa.hpp"
 #include "tritri/answers.hpp"
 #include "tritri/isa.hpp"
 
-#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace tritri::exact {
 
 // The batch kernels load a pair as 18 consecutive doubles (kernel.inc).
 static_assert(sizeof(TrianglePair) == 18 * sizeof(double), "TrianglePair must be 18 packed doubles");
 
-enum class Isa : std::uint8_t { scalar = 0, sse2 = 1, avx2 = 2, avx512 = 3 };
+// The instruction sets are the lane layer's (algorithms/lanes/isa.hpp): one detection and one
+// override, TRITRI_ISA, for every lane algorithm.
+using Isa = tritri::Isa;
+// The API's name of `isa` as a C string, for printing (the tests, the fuzz harness).
+inline const char* to_string(Isa isa) { return tritri::to_string(isa).data(); }
+inline Isa detected_isa() { return lanes::detected(); }
+// The set the batch entry points use: the detected one, or the narrower one TRITRI_ISA names.
+inline Isa active_isa() { return lanes::active(); }
+inline bool supported(Isa isa) { return lanes::supported(isa); }
 
-inline const char* to_string(Isa isa) {
-  switch (isa) {
-    case Isa::scalar: return "scalar";
-    case Isa::sse2: return "sse2";
-    case Isa::avx2: return "avx2";
-    case Isa::avx512: return "avx512";
-  }
-  return "?";
-}
-
-// The widest instruction set this machine runs that exact's kernels are compiled for here (the
-// machine's, tritri/isa.hpp: same names and order for these four).
-inline Isa detected_isa() {
-#if TRITRI_EXACT_X86
-  return static_cast<Isa>(tritri::machine_isa());
-#else
-  return Isa::scalar;
-#endif
-}
-
-// The instruction set the batch entry points use: the detected one, or the narrower one the
-// environment asks every lane algorithm for (TRITRI_ISA, tritri/isa.hpp; same names and order).
-inline Isa active_isa() {
-  static const Isa isa = static_cast<Isa>(
-      std::min(static_cast<int>(tritri::requested_isa()), static_cast<int>(detected_isa())));
-  return isa;
-}
-
-inline bool supported(Isa isa) { return static_cast<int>(isa) <= static_cast<int>(detected_isa()); }
+// Set on an index handed from the second SIMD pass to the scalar pass: the pair is on the grid.
+inline constexpr std::uint32_t kGridFlag = 0x80000000u;
 
 // Where the pairs of this thread's batches were decided (cumulative; reset with reset_stats()).
 struct Stats {
@@ -99,6 +82,28 @@ namespace detail {
 
 inline constexpr std::size_t kChunk = 4096;  // pairs per SIMD pass before its exact pass
 
+// One instruction set's SIMD passes at one level (detail/kernel.inc, detail/kernel_pass2.inc).
+template <class Out>
+struct Passes {
+  // The n pairs (n a multiple of the lanes): writes the decided answers and the indices of the
+  // others to `pending`; returns their count.
+  std::size_t (*first)(const TrianglePair* pairs, std::size_t n, Out* out, std::uint32_t* pending);
+  // The `count` pairs at those indices: writes the decided answers and the rest's indices (with
+  // kGridFlag where the pair is on the grid) to `rest`; returns their count.
+  std::size_t (*second)(const TrianglePair* pairs, Out* out, const std::uint32_t* pending, std::size_t count,
+                        std::uint32_t* rest);
+};
+struct Kernel {
+  Passes<Overlap> overlap;
+  Passes<RelationAnswer> relation;
+};
+
+// The kernels, once per instruction set of this architecture on the lane layer's V.
+#define TRITRI_LANES_KERNEL "algorithms/exact/detail/kernel.inc"
+#include "algorithms/lanes/each_isa.hpp"
+// By Isa; nullptr where no kernel is compiled (scalar, another architecture's sets).
+inline constexpr std::array<const Kernel*, kIsas.size()> kKernels = TRITRI_LANES_TABLE(kKernel);
+
 template <bool kRelation, class Out>
 __attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, const std::uint32_t* pending,
                                           std::size_t count) {
@@ -122,37 +127,22 @@ template <bool kRelation, class Out>
 void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
   std::uint32_t pending[kChunk], rest[kChunk];
   stats().pairs += n;
-  int lanes = 0;  // scalar: every pair goes to the exact pass
-#if TRITRI_EXACT_X86
-  if (isa == Isa::sse2) lanes = isa_sse2::I::W;
-  if (isa == Isa::avx2) lanes = isa_avx2::I::W;
-  if (isa == Isa::avx512) lanes = isa_avx512::I::W;
-#endif
+  const Kernel* kernel = kKernels[static_cast<std::size_t>(isa)];
+  const std::size_t lanes = kernel ? lanes::width(isa) : 0;  // none: every pair to the exact pass
+  const Passes<Out>* passes = nullptr;
+  if (kernel) {
+    if constexpr (kRelation) passes = &kernel->relation;
+    else passes = &kernel->overlap;
+  }
   for (std::size_t start = 0; start < n; start += kChunk) {
     const std::size_t m = n - start < kChunk ? n - start : kChunk;
-    const std::size_t simd = lanes ? m - m % static_cast<std::size_t>(lanes) : 0;
-    std::size_t np = 0;
-#if TRITRI_EXACT_X86
-    switch (isa) {
-      case Isa::sse2: np = isa_sse2::run<kRelation>(pairs + start, simd, out + start, pending, 0, 0); break;
-      case Isa::avx2: np = isa_avx2::run<kRelation>(pairs + start, simd, out + start, pending, 0, 0); break;
-      case Isa::avx512: np = isa_avx512::run<kRelation>(pairs + start, simd, out + start, pending, 0, 0); break;
-      case Isa::scalar: break;
-    }
-#endif
+    const std::size_t simd = lanes ? m - m % lanes : 0;
+    std::size_t np = passes ? passes->first(pairs + start, simd, out + start, pending) : 0;
     for (std::size_t j = simd; j < m; ++j) pending[np++] = static_cast<std::uint32_t>(j);
     stats().pending += np;
     std::size_t nr = np;
-#if TRITRI_EXACT_X86
-    switch (isa) {
-      case Isa::sse2: nr = isa_sse2::run2<kRelation>(pairs + start, out + start, pending, np, rest); break;
-      case Isa::avx2: nr = isa_avx2::run2<kRelation>(pairs + start, out + start, pending, np, rest); break;
-      case Isa::avx512: nr = isa_avx512::run2<kRelation>(pairs + start, out + start, pending, np, rest); break;
-      case Isa::scalar: std::memcpy(rest, pending, np * sizeof(std::uint32_t)); break;
-    }
-#else
-    std::memcpy(rest, pending, np * sizeof(std::uint32_t));
-#endif
+    if (passes) nr = passes->second(pairs + start, out + start, pending, np, rest);
+    else std::memcpy(rest, pending, np * sizeof(std::uint32_t));
     exact_pass<kRelation>(pairs + start, out + start, rest, nr);
   }
 }

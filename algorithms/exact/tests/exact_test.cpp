@@ -546,7 +546,7 @@ struct IsaAnswers {
 // The overlap and relation batch answers of every instruction set the machine supports.
 std::vector<IsaAnswers> answers_on_every_isa(const std::vector<TrianglePair>& pairs) {
   std::vector<IsaAnswers> out;
-  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+  for (ex::Isa isa : kIsas) {  // every set: NEON on aarch64
     if (!ex::supported(isa)) continue;
     IsaAnswers a{isa, std::vector<Overlap>(pairs.size()), std::vector<RelationAnswer>(pairs.size())};
     ex::overlap_batch_with(isa, pairs.data(), pairs.size(), a.overlap.data());
@@ -701,8 +701,8 @@ ex::Stats run_overlap(ex::Isa isa, const std::vector<TrianglePair>& pairs) {
 
 TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
   GenRng r(10);
-  for (ex::Isa isa : {ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
-    if (!ex::supported(isa)) continue;
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
     SCOPED_TRACE(ex::to_string(isa));
     // 1. general position: every lane decided by the first SIMD pass (filter certain)
     std::vector<TrianglePair> general;
@@ -786,7 +786,7 @@ TEST(Paths, EveryBatchLengthAndChunking) {
   for (int i = 0; i < 9000; ++i) pairs.push_back(i % 3 ? random_pair(r) : small_int_pair(r, 2));
   std::vector<RelationAnswer> ref(pairs.size());
   for (std::size_t i = 0; i < pairs.size(); ++i) ref[i] = ex::relation(pairs[i]);
-  for (ex::Isa isa : {ex::Isa::scalar, ex::Isa::sse2, ex::Isa::avx2, ex::Isa::avx512}) {
+  for (ex::Isa isa : kIsas) {  // every set: NEON on aarch64
     if (!ex::supported(isa)) continue;
     for (std::size_t n : {0, 1, 2, 3, 5, 7, 8, 9, 15, 16, 17, 31, 40, 4095, 4096, 4097, 9000}) {
       std::vector<RelationAnswer> rel(n + 1, RelationAnswer{Relation::unknown, Dimension::unknown});
