@@ -269,26 +269,44 @@ inline bool on_grid(const double* c) {
   return (grid[0] & grid[1]) != 0;
 }
 
-// The pair's grid test, evaluated at most once per pair and only when a value within the bound
-// needs it (`state`: -1 not yet known, 0 off the grid, 1 on it).
+// The pair's grid test and its shared integer conversion, each evaluated at most once per pair
+// and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes).
 struct LazyGrid {
+  LazyGrid(const double* pair, int grid) : c(pair), state(grid) {}  // x left unset until needed
   const double* c;
   int state;
+  int ints = -1;
+  intexact::PairInt61 x;
   bool on() {
     if (state < 0) state = on_grid(c) ? 1 : 0;
     return state != 0;
+  }
+  bool converted() {
+    if (ints < 0) ints = intexact::pair_to_int61(c, x) ? 1 : 0;
+    return ints != 0;
   }
 };
 
 // The exact sign of o3(a, b, cc, d), given a value `v` of it evaluated in det3_eval's shape on
 // four of the pair's six (finite) points and the pair's bound, valid for every such value
 // (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on the
-// grid the value is exact ("The grid case"); else the per-call filters and the integer engine.
-inline int sign_o3(double v, double bound, LazyGrid& g, P a, P b, P cc, P d) {
+// grid the value is exact ("The grid case"); else the pair's shared integer conversion when
+// every axis fits ("Zeros off the grid"); else the per-call filters and the integer engine.
+// (The certain case inline, the rest out of line: most calls are certain.)
+[[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, P a, P b, P cc, P d) {
+  if (g.on()) return sgn(v);
+  if (g.converted()) {
+    const int ia = static_cast<int>(a - g.c) / 3;
+    const int i[6] = {ia, static_cast<int>(b - g.c) / 3, ia, static_cast<int>(cc - g.c) / 3, ia,
+                      static_cast<int>(d - g.c) / 3};
+    return intexact::det3_pair_sign(g.x, i);
+  }
+  return Filtered::o3(a, b, cc, d);
+}
+[[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, P a, P b, P cc, P d) {
   if (v > bound) return 1;
   if (v < -bound) return -1;
-  if (g.on()) return sgn(v);
-  return Filtered::o3(a, b, cc, d);
+  return sign_o3_within(v, g, a, b, cc, d);
 }
 
 // Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
