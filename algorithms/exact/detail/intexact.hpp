@@ -60,6 +60,18 @@ inline bool det3_structural_zero(const double* const p[6]) {
   return false;
 }
 
+// sign det[d[0], d[1], d[2]] of integer rows below 2^62 in magnitude: cross terms < 2^125 in
+// __int128, the dot product < 2^189 in 192-bit two's complement.
+inline int det3_rows_sign(const std::int64_t (&d)[3][3]) {
+  I192 acc{{0, 0, 0}};
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const i128 m = static_cast<i128>(d[1][i]) * d[2][j] - static_cast<i128>(d[1][j]) * d[2][i];  // |m| < 2^125
+    acc = add192(acc, mul_128_64(m, d[0][k]));                                               // |acc| < 2^189
+  }
+  return sign192(acc);
+}
+
 // The fast path: when every axis converts to integers below 2^61, sets sign and returns true.
 inline bool det3_fast(const double* const p[6], int& sign) {
   std::int64_t x[3][6];  // x[axis][point]
@@ -71,14 +83,39 @@ inline bool det3_fast(const double* const p[6], int& sign) {
   std::int64_t d[3][3];  // d[row][axis], |d| < 2^62
   for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) d[r][k] = x[k][2 * r + 1] - x[k][2 * r];
-  I192 acc{{0, 0, 0}};
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const i128 m = static_cast<i128>(d[1][i]) * d[2][j] - static_cast<i128>(d[1][j]) * d[2][i];  // |m| < 2^125
-    acc = add192(acc, mul_128_64(m, d[0][k]));                                               // |acc| < 2^189
-  }
-  sign = sign192(acc);
+  sign = det3_rows_sign(d);
   return true;
+}
+
+// ---------------------------------------------------------------- one conversion per pair
+
+// A pair's six points (18 coordinates, point v's axis k at c[3v + k]) converted once, axis by
+// axis, as axis_to_int61 converts (one scale per axis, from the largest of the six values).
+// Any positive scale per axis leaves a determinant's sign unchanged, so every det3 whose
+// points are among the six is the fast path's determinant of these integers: each |x| < 2^61,
+// so the differences, cross terms and dot product keep det3_fast's ranges, whichever four
+// points it takes (algorithms/exact/README.md, "Zeros off the grid").
+struct PairInt61 {
+  std::int64_t x[3][6];  // x[axis][point]
+};
+
+// Loads the conversion; false when some axis has a span above 61 bits or a tiny maximum (then
+// `out` is unusable and the caller takes the per-determinant engine).
+inline bool pair_to_int61(const double* c, PairInt61& out) {
+  for (int k = 0; k < 3; ++k) {
+    const double* v[6] = {c + k, c + 3 + k, c + 6 + k, c + 9 + k, c + 12 + k, c + 15 + k};
+    if (!axis_to_int61(v, 6, out.x[k])) return false;
+  }
+  return true;
+}
+
+// sign det[P1-P0, P3-P2, P5-P4] for the points with indices i[0..5] (0..5) of a converted pair.
+inline int det3_pair_sign(const PairInt61& p, const int (&i)[6]) {
+  ++counts().pair3;
+  std::int64_t d[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) d[r][k] = p.x[k][i[2 * r + 1]] - p.x[k][i[2 * r]];
+  return det3_rows_sign(d);
 }
 
 // The middle path: |X| < 2^125, differences < 2^126 (2 limbs), cross terms < 2^253 (4 limbs),

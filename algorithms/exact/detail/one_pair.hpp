@@ -269,26 +269,39 @@ inline bool on_grid(const double* c) {
   return (grid[0] & grid[1]) != 0;
 }
 
-// The pair's grid test, evaluated at most once per pair and only when a value within the bound
-// needs it (`state`: -1 not yet known, 0 off the grid, 1 on it).
+// The pair's grid test and its shared integer conversion, each evaluated at most once per pair
+// and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes).
 struct LazyGrid {
+  LazyGrid(const double* pair, int grid) : c(pair), state(grid) {}  // x left unset until needed
   const double* c;
   int state;
+  int ints = -1;
+  intexact::PairInt61 x;
   bool on() {
     if (state < 0) state = on_grid(c) ? 1 : 0;
     return state != 0;
   }
+  bool converted() {
+    if (ints < 0) ints = intexact::pair_to_int61(c, x) ? 1 : 0;
+    return ints != 0;
+  }
 };
 
-// The exact sign of o3(a, b, cc, d), given a value `v` of it evaluated in det3_eval's shape on
-// four of the pair's six (finite) points and the pair's bound, valid for every such value
-// (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on the
-// grid the value is exact ("The grid case"); else the per-call filters and the integer engine.
-inline int sign_o3(double v, double bound, LazyGrid& g, P a, P b, P cc, P d) {
+// The exact sign of o3(a, b, cc, d) for the pair's points with indices a, b, cc, d (0..5), given
+// a value `v` of it evaluated in det3_eval's shape and the pair's bound, valid for every such
+// value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
+// the grid the value is exact ("The grid case"); else the pair's shared integer conversion when
+// every axis fits ("Zeros off the grid"); else the per-call filters and the integer engine.
+// (The certain case inline, the rest out of line: most calls are certain.)
+[[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
+  if (g.on()) return sgn(v);
+  if (g.converted()) return intexact::det3_pair_sign(g.x, {a, b, a, cc, a, d});
+  return Filtered::o3(g.c + 3 * a, g.c + 3 * b, g.c + 3 * cc, g.c + 3 * d);
+}
+[[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, int a, int b, int cc, int d) {
   if (v > bound) return 1;
   if (v < -bound) return -1;
-  if (g.on()) return sgn(v);
-  return Filtered::o3(a, b, cc, d);
+  return sign_o3_within(v, g, a, b, cc, d);
 }
 
 // Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
@@ -298,13 +311,14 @@ Relation crossing_known(const double* c, const int s1[3], const int s2[3], doubl
   int l1, f1, l2, f2;
   lone_vertex(s1, l1, f1);
   lone_vertex(s2, l2, f2);
-  P p1 = c + 3 * l1, q1 = c + 3 * ((l1 + 1) % 3), r1 = c + 3 * ((l1 + 2) % 3);
-  P p2 = c + 9 + 3 * l2, q2 = c + 9 + 3 * ((l2 + 1) % 3), r2 = c + 9 + 3 * ((l2 + 2) % 3);
+  int p1 = l1, q1 = (l1 + 1) % 3, r1 = (l1 + 2) % 3;  // point indices 0..5
+  int p2 = 3 + l2, q2 = 3 + (l2 + 1) % 3, r2 = 3 + (l2 + 2) % 3;
   if (f2 < 0) std::swap(q1, r1);  // flips π1 so that p2 is on its positive side
   if (f1 < 0) std::swap(q2, r2);  // flips π2 so that p1 is on its positive side
-  const int g1 = sign_o3(det3_eval(p1, q1, p1, p2, p1, q2).value, bound, g, p1, q1, p2, q2);
+  P P1 = c + 3 * p1, Q1 = c + 3 * q1, R1 = c + 3 * r1, P2 = c + 3 * p2, Q2 = c + 3 * q2, R2 = c + 3 * r2;
+  const int g1 = sign_o3(det3_eval(P1, Q1, P1, P2, P1, Q2).value, bound, g, p1, q1, p2, q2);
   if (g1 > 0) return Relation::disjoint;
-  const int g2 = sign_o3(det3_eval(p1, r1, p1, r2, p1, p2).value, bound, g, p1, r1, r2, p2);
+  const int g2 = sign_o3(det3_eval(P1, R1, P1, R2, P1, P2).value, bound, g, p1, r1, r2, p2);
   if (g2 > 0) return Relation::disjoint;
   if (!kRelation) return Relation::cross;  // meets
   if (g1 == 0 || g2 == 0 || s1[l1] == 0 || s2[l2] == 0) return Relation::touch_point;
@@ -332,11 +346,11 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   LazyGrid g{c, grid ? 1 : -1};
   const double b = ps.bound;
   int known[6];
-  for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, c + 9, c + 12, c + 15, c + 3 * k);
+  for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
   // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
   // the classification reads s2 only when both are proper, so zeros are its exact signs
-  for (int k = 0; k < 3; ++k) known[3 + k] = any1 ? sign_o3(ps.s2[k], b, g, c, c + 3, c + 6, c + 9 + 3 * k) : 0;
+  for (int k = 0; k < 3; ++k) known[3 + k] = any1 ? sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k) : 0;
   const bool any2 = (known[3] | known[4] | known[5]) != 0;
   if (any1 & any2) {  // both triangles proper, the planes distinct
     const bool one1 = one_sided(known), one2 = one_sided(known + 3);

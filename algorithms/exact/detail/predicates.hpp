@@ -158,7 +158,8 @@ struct Filtered {
   static int d3(P a0, P a1, P b0, P b1, P c0, P c1) {
     const Det3 d = det3_eval(a0, a1, b0, b1, c0, c1);
     if (const int s = det3_filtered_sign(d); __builtin_expect(s != 0, 1)) return s;
-    if (dmax(d.x, dmax(d.y, d.z)) <= bound::kMax3) {  // the dynamic bound
+    // the dynamic bound (it cannot decide a computed zero: |0| > b never holds)
+    if ((d.value != 0.0) & (dmax(d.x, dmax(d.y, d.z)) <= bound::kMax3)) {
       const double b = bound::kPerm3 * d.perm + bound::kAbs3;
       if (const int s = (d.value > b) - (d.value < -b)) return s;
     }
@@ -178,7 +179,7 @@ struct Filtered {
     const double bi = b[i] - a[i], bj = b[j] - a[j], ci = c[i] - a[i], cj = c[j] - a[j];
     const double q1 = bi * cj, q2 = bj * ci;
     const double v = q1 - q2;
-    if (dmax(dmax(std::fabs(bi), std::fabs(ci)), dmax(std::fabs(bj), std::fabs(cj))) <= bound::kMax2) {
+    if ((v != 0.0) & (dmax(dmax(std::fabs(bi), std::fabs(ci)), dmax(std::fabs(bj), std::fabs(cj))) <= bound::kMax2)) {
       const double b2 = bound::kPerm2 * (std::fabs(q1) + std::fabs(q2)) + bound::kAbs2;
       if (const int s = (v > b2) - (v < -b2)) return s;
     }

@@ -454,6 +454,94 @@ TEST(Engines, ExtremeValues) {
   }
 }
 
+// ---------------------------------------------------------------- zeros off the grid
+
+namespace {
+
+// Six points with exact zeros among their determinants, off the grid (integers of up to 44 bits:
+// spans above the grid's 15), at magnitude 2^scale: a point on the line of two others, a point on
+// the plane of three, an edge parallel to another; with zero coordinates made -0.0 and, now and
+// then, one coordinate moved by one ulp (a value just off zero) or a wide coordinate (a span
+// above 61 bits: the shared conversion declines).
+TrianglePair zeros_off_grid(GenRng& r, int scale) {
+  const std::int64_t m = std::int64_t{1} << static_cast<int>(r.integer(16, 44));
+  auto pt = [&] {
+    return V(static_cast<double>(r.integer(-m, m)), static_cast<double>(r.integer(-m, m)),
+             static_cast<double>(r.integer(-m, m)));
+  };
+  const V a = pt(), b = pt(), c = pt();
+  auto comb = [&](V x, V y, V z) -> V {  // x + i(y - x) + j(z - x), small i, j: exact below 2^53
+    const double i = static_cast<double>(r.integer(-3, 3)), j = static_cast<double>(r.integer(-3, 3));
+    return x + i * (y - x) + j * (z - x);
+  };
+  V q[6] = {a, b, c, pt(), pt(), pt()};
+  for (int k = 3; k < 6; ++k)
+    if (r.integer(0, 2) != 0) q[k] = comb(q[r.integer(0, k - 1)], q[r.integer(0, k - 1)], q[r.integer(0, k - 1)]);
+  if (r.integer(0, 3) == 0) {  // a coordinate shared along an axis (a structural zero column)
+    const int k = static_cast<int>(r.integer(0, 2));
+    for (auto& v : q) v[k] = a[k];
+  }
+  TrianglePair p;
+  for (int v = 0; v < 6; ++v) {
+    V w = q[v];
+    for (int k = 0; k < 3; ++k) {
+      w[k] = std::ldexp(w[k], scale);
+      if (w[k] == 0.0 && r.coin()) w[k] = -0.0;
+    }
+    (v < 3 ? p.t1[v] : p.t2[v - 3]) = w;
+  }
+  switch (r.integer(0, 7)) {
+    case 0: {  // one ulp off
+      double& x = (r.coin() ? p.t1 : p.t2)[r.integer(0, 2)][r.integer(0, 2)];
+      x = std::nextafter(x, r.coin() ? INFINITY : -INFINITY);
+      break;
+    }
+    case 1:  // a span above 61 bits on one axis
+      p.t2[r.integer(0, 2)][r.integer(0, 2)] += std::ldexp(1.0, scale - 30);
+      break;
+    default: break;
+  }
+  return p;
+}
+
+}  // namespace
+
+TEST(ZerosOffTheGrid, PairConversionAndFilteredAgreeWithGmp) {
+  GenRng r(22);
+  auto& ic = ex::intexact::counts();
+  ic = {};
+  int converted = 0, zeros = 0;
+  const int scales[] = {0, -1074, -1060, -1000, -600, -40, 7, 300, 900, 960};
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int scale = scales[trial % std::size(scales)];
+    const TrianglePair p = zeros_off_grid(r, scale);
+    double c[18];
+    coords(p, c);
+    ex::intexact::PairInt61 x;
+    const bool ok = ex::intexact::pair_to_int61(c, x);
+    converted += ok;
+    each_det3(c, [&](const double* a, const double* b, const double* cc, const double* d) {
+      const double* q[6] = {a, b, a, cc, a, d};
+      const int g = ex::expansion::det3_sign_gmp(q);
+      zeros += g == 0;
+      ASSERT_EQ(ex::Filtered::o3(a, b, cc, d), g) << trial;
+      if (ok) {
+        const int i[6] = {static_cast<int>(a - c) / 3, static_cast<int>(b - c) / 3, static_cast<int>(a - c) / 3,
+                          static_cast<int>(cc - c) / 3, static_cast<int>(a - c) / 3, static_cast<int>(d - c) / 3};
+        ASSERT_EQ(ex::intexact::det3_pair_sign(x, i), g) << trial;
+      }
+    });
+    for (int i = 0; i < 3; ++i)  // the 2-D signs (the dynamic bound's zero skip)
+      for (int v = 0; v + 2 < 6; ++v)
+        ASSERT_EQ(ex::Filtered::o2(c + 3 * v, c + 3 * v + 3, c + 3 * v + 6, i, (i + 1) % 3),
+                  ex::expansion::det2_sign_gmp(c + 3 * v, c + 3 * v + 3, c + 3 * v + 6, i, (i + 1) % 3));
+  }
+  // the shared conversion must have run on most pairs, and on many exact zeros
+  EXPECT_GT(converted, 2000);
+  EXPECT_GT(zeros, 100000);
+  EXPECT_GT(ic.pair3, 500000u);
+}
+
 // ---------------------------------------------------------------- classification vs oracle
 
 namespace {
@@ -685,6 +773,28 @@ TEST(OnePair, ExactSignsAfterTheFilterAtTheirEdges) {
       moved.push_back(translated(scaled(v, -3), V(0.1, 1.0 / 3.0, 0.7)));
     }
   expect_all_paths_agree(moved, "exact signs at their edges");
+}
+
+TEST(ZerosOffTheGrid, OnePairPathAgreesWithTheOracle) {
+  // the same pairs and their images with a touching configuration put into the triangles: each
+  // one-pair and batch answer against the oracle; the shared conversion must decide some signs
+  GenRng r(23);
+  std::vector<TrianglePair> pairs;
+  const int scales[] = {0, -1074, -1000, -40, 300, 960};
+  for (int trial = 0; trial < 1200; ++trial) {
+    TrianglePair p = zeros_off_grid(r, scales[trial % std::size(scales)]);
+    if (trial % 2) {  // T2's first vertex on T1's first edge or in T1's plane, exactly
+      const V a = p.t1[0], b = p.t1[1], c = p.t1[2];
+      const V d = r.coin() ? V(a + 2.0 * (b - a)) : V(a + (b - a) + (c - a));
+      bool exact = true;  // only when the combination is exactly representable (checked below)
+      for (int k = 0; k < 3; ++k) exact &= std::isfinite(d[k]);
+      if (exact) p.t2[0] = d;
+    }
+    pairs.push_back(p);
+  }
+  ex::intexact::counts() = {};
+  expect_all_paths_agree(pairs, "zeros off the grid");
+  EXPECT_GT(ex::intexact::counts().pair3, 1000u);
 }
 
 // ---------------------------------------------------------------- the paths of the batch
