@@ -218,7 +218,9 @@ void init_google_benchmark(const Options& options) {
   };
   // Every flag a run may set is given each time: Google Benchmark keeps a flag's value from one
   // Initialize to the next, and the tests run several benches in one process.
-  flags.push_back("--benchmark_filter=" + options.filter);
+  // The filter itself is applied to the entries before they are registered (bench.cpp), so Google
+  // Benchmark runs every registered benchmark.
+  flags.push_back("--benchmark_filter=");
   flags.push_back("--benchmark_list_tests=" + std::string(options.list_only ? "true" : "false"));
   std::vector<char*> argv = {program_name};
   for (auto& f : flags) argv.push_back(f.data());

@@ -13,7 +13,8 @@
 //                     interface is timing exactly the pairs an early-exit loop would test; it
 //                     leaves out only the exit branch itself, one per frame.
 // Each pool is timed at the one level its query needs (Pool::query: overlap, or segment for a
-// self scene), an algorithm that does not answer it at the lowest level asked for above it. Beside the pools, the context key "scene V" records FCL's own times for the same query
+// self scene), an algorithm that does not answer it at the lowest level asked for above it.
+// Beside the pools, the context key "scene V" records FCL's own times for the same query
 // (traversal only, its triangle test, fcl::collide), from which the report derives the share of
 // a whole query spent in the triangle test.
 #include "harness/bench/workload.hpp"
