@@ -408,12 +408,25 @@ TEST(BenchRun, PathCountersAreRecordedPerPoolFromOnePass) {
   std::filesystem::remove(path);
 }
 
+// The default set of workloads (what `tritri bench` and `--quick` run when none is named).
+TEST(BenchCli, TheDefaultWorkloadsAreTheRatiosTheTypesAndTheFamilies) {
+  std::map<std::string, std::size_t> values_of;
+  for (const Selected& s : select_workloads({}, {})) values_of[s.workload->kind()] = s.values.size();
+  EXPECT_EQ(values_of["ratio"], 11u);
+  EXPECT_EQ(values_of["type"], 4u);
+  EXPECT_GE(values_of["family"], 1u);  // the corpus generator's families
+}
+
+// Every registered algorithm end to end, on the three ratio pools of the timing modes' targets and
+// the four type pools (the default set's other pools take the same path: the test above lists them).
 TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
   const auto dir = std::filesystem::temp_directory_path() / ("tritri-bench-cli-test-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const auto json = dir / "quick.json", log = dir / "quick.log";
-  const std::string command = std::string(TRITRI_BINARY_DIR) + "/bin/tritri bench --quick --json '" + json.string() +
-                              "' > '" + log.string() + "' 2>&1";
+  const std::string command = std::string(TRITRI_BINARY_DIR) +
+                              "/bin/tritri bench --quick --workload ratio:0 --workload ratio:0.5 --workload ratio:1 "
+                              "--workload type --json '" +
+                              json.string() + "' > '" + log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream log_in(log);
   const std::string output((std::istreambuf_iterator<char>(log_in)), std::istreambuf_iterator<char>());
@@ -473,9 +486,9 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
     const std::string name = p["name"];
     ++pools_of[name.substr(0, name.find(':'))];
   }
-  EXPECT_EQ(pools_of["ratio"], 11);
+  EXPECT_EQ(pools_of["ratio"], 3);
   EXPECT_EQ(pools_of["type"], 4);
-  EXPECT_GE(pools_of["family"], 1);  // the corpus generator's families
+  EXPECT_EQ(pools_of.size(), 2u);
   bool moller_ops = false;
   for (const auto& r : doc["tritri"]["results"])
     if (r["name"] == "moller97/overlap/ratio:0.50/call") {
