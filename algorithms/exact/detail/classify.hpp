@@ -221,6 +221,46 @@ Dimension shapes_meet(Shape a, Shape b) {
 
 // ---- coplanar proper triangles ----
 
+// The 18 signs of a coplanar pair in one projection, sign-normalised so that inside is positive:
+// o[0][e][v] is b's vertex v against a's edge e (from vertex e to e+1) times a's orientation,
+// o[1][e][v] a's vertex v against b's edge e times b's orientation.
+using CoplanarSigns = int[2][3][3];
+
+// The relation of coplanar proper triangles a, b from their 18 exact signs, by the separating-
+// axis theorem (algorithms/exact/README.md, step 3 of "The decisions"). At the overlap level only
+// the emptiness counts.
+template <bool kRelation>
+Relation coplanar_from_signs(const Tri& a, const Tri& b, const CoplanarSigns& o) {
+  // Without branches on the signs: an edge separates strictly when the largest of its three
+  // signs is negative, weakly when it is not positive.
+  int largest[6];
+  bool strict = false;
+  for (int s = 0; s < 2; ++s)
+    for (int e = 0; e < 3; ++e) {
+      const int* r = o[s][e];
+      const int m = std::max(r[0], std::max(r[1], r[2]));
+      largest[3 * s + e] = m;
+      strict |= m < 0;
+    }
+  if (strict) return Relation::coplanar_disjoint;
+  if (!kRelation) return Relation::coplanar_overlap;  // meets; the kind is not asked for
+  int weak_side = -1, weak_edge = -1;
+  for (int k = 0; k < 6; ++k)
+    if (weak_side < 0 && largest[k] <= 0) weak_side = k / 3, weak_edge = k % 3;
+  if (weak_side < 0) return Relation::coplanar_overlap;
+  const Tri& edge_owner = weak_side == 0 ? a : b;
+  const Tri& other = weak_side == 0 ? b : a;
+  const int* r = o[weak_side][weak_edge];
+  const int zeros = (r[0] == 0) + (r[1] == 0) + (r[2] == 0);
+  if (zeros == 1) return Relation::coplanar_point;
+  int u = -1, w = -1;
+  for (int v = 0; v < 3; ++v)
+    if (r[v] == 0) (u < 0 ? u : w) = v;
+  const Dimension d = collinear_overlap(edge_owner.v[weak_edge], edge_owner.v[(weak_edge + 1) % 3],
+                                        other.v[u], other.v[w]);
+  return d == Dimension::segment ? Relation::coplanar_segment : Relation::coplanar_point;
+}
+
 template <class Pr, bool kRelation>
 Relation coplanar(const Tri& a, const Tri& b, const int na[3], const int nb[3]) {
   const Projection pr = projection_for(na);
@@ -233,7 +273,7 @@ Relation coplanar(const Tri& a, const Tri& b, const int na[3], const int nb[3]) 
       lo_j = std::min(lo_j, t->v[v][pr.j]), hi_j = std::max(hi_j, t->v[v][pr.j]);
     }
   const double bound2 = det2_bound(hi_i - lo_i, hi_j - lo_j);
-  int o[2][3][3];  // o[0][e][v]: b's vertex v against a's edge e; o[1]: a against b
+  CoplanarSigns o;
   for (int side = 0; side < 2; ++side) {
     const Tri& t = side == 0 ? a : b;
     const Tri& u = side == 0 ? b : a;
@@ -247,34 +287,7 @@ Relation coplanar(const Tri& a, const Tri& b, const int na[3], const int nb[3]) 
       }
     }
   }
-  // Without branches on the signs: an edge separates strictly when the largest of its three
-  // signs is negative, weakly when it is not positive.
-  int largest[6];
-  bool strict = false;
-  for (int s = 0; s < 2; ++s)
-    for (int e = 0; e < 3; ++e) {
-      const int* r = o[s][e];
-      const int m = std::max(r[0], std::max(r[1], r[2]));
-      largest[3 * s + e] = m;
-      strict |= m < 0;
-    }
-  if (strict) return Relation::coplanar_disjoint;
-  int weak_side = -1, weak_edge = -1;
-  for (int k = 0; k < 6; ++k)
-    if (weak_side < 0 && largest[k] <= 0) weak_side = k / 3, weak_edge = k % 3;
-  if (!kRelation) return Relation::coplanar_overlap;  // meets; the kind is not asked for
-  if (weak_side < 0) return Relation::coplanar_overlap;
-  const Tri& edge_owner = weak_side == 0 ? a : b;
-  const Tri& other = weak_side == 0 ? b : a;
-  const int* r = o[weak_side][weak_edge];
-  const int zeros = (r[0] == 0) + (r[1] == 0) + (r[2] == 0);
-  if (zeros == 1) return Relation::coplanar_point;
-  int u = -1, w = -1;
-  for (int v = 0; v < 3; ++v)
-    if (r[v] == 0) (u < 0 ? u : w) = v;
-  const Dimension d = collinear_overlap(edge_owner.v[weak_edge], edge_owner.v[(weak_edge + 1) % 3],
-                                        other.v[u], other.v[w]);
-  return d == Dimension::segment ? Relation::coplanar_segment : Relation::coplanar_point;
+  return coplanar_from_signs<kRelation>(a, b, o);
 }
 
 // ---- Guigue–Devillers' canonical order ----

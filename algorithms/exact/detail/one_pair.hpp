@@ -16,11 +16,13 @@
 //             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
 //   exact     the six plane signs made exact (the grid test once, else the per-call filters and
 //             the integer engine); crossing and one-sided pairs decided from them with the
-//             pair's bound for G1, G2; coplanar and degenerate pairs by the classification.
+//             pair's bound for G1, G2; coplanar proper pairs in 2-D (coplanar.hpp); degenerate
+//             pairs by the classification.
 // Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call" and
 // "Exact signs after the filter".
 #pragma once
 
+#include "algorithms/exact/detail/coplanar.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
 
 #include <cstdint>
@@ -348,6 +350,12 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   int known[6];
   for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
+  // T1 in π2: coplanar when both are proper, decided in 2-D (coplanar.hpp); degenerate input
+  // goes on to the classification
+  if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
+    if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
+    return answer_with(rel);
+  }
   // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
   // the classification reads s2 only when both are proper, so zeros are its exact signs
   for (int k = 0; k < 3; ++k) known[3 + k] = any1 ? sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k) : 0;

@@ -913,3 +913,141 @@ TEST(Paths, EveryBatchLengthAndChunking) {
     }
   }
 }
+
+// ---------------------------------------------------------------- coplanar pairs
+
+namespace {
+
+// A point of the plane z = 0 (x, y) mapped by the integer matrix f: exact below 2^53.
+V in_frame(const std::array<std::array<double, 3>, 3>& f, double x, double y) {
+  return V(f[0][0] * x + f[0][1] * y, f[1][0] * x + f[1][1] * y, f[2][0] * x + f[2][1] * y);
+}
+
+// A random integer matrix whose first two columns are independent: the plane z = 0 mapped
+// onto a general plane through the origin (normal components all non-zero, or not).
+std::array<std::array<double, 3>, 3> random_frame(GenRng& r) {
+  for (;;) {
+    std::array<std::array<double, 3>, 3> f{};
+    for (auto& row : f)
+      for (double& x : row) x = static_cast<double>(r.integer(-2, 2));
+    const double nx = f[1][0] * f[2][1] - f[2][0] * f[1][1], ny = f[2][0] * f[0][1] - f[0][0] * f[2][1],
+                 nz = f[0][0] * f[1][1] - f[1][0] * f[0][1];
+    if (nx != 0 || ny != 0 || nz != 0) return f;
+  }
+}
+
+// Coplanar pairs in a general plane decided by one_pair.hpp's coplanar step (coplanar.hpp): T1
+// with an edge u -> w of direction (2^47 + 1, 2^47) and T2's first vertex one unit of that edge's
+// o2 inside (+1) or outside (-1) its line (o2(u, w, p) = ±1, far within the det2 bound of
+// extents near 2^48), T2's other vertices clearly outside: they overlap iff the sign is +1. With
+// `far`, T1's third vertex is at 2^70 along y: that axis spans 70 bits, the shared conversion is
+// refused and the per-call engine decides.
+TrianglePair hair_from_edge(GenRng& r, int side, bool far) {
+  const auto f = random_frame(r);
+  const double e = std::ldexp(1.0, 47), g = std::ldexp(1.0, 40);
+  const double px = side > 0 ? 1 : -1, py = side > 0 ? 1 : -1;  // (2^47+1)·py - 2^47·px = side
+  TrianglePair p;
+  p.t1 = Triangle{{in_frame(f, 0, 0), in_frame(f, e + 1, e), in_frame(f, 0, far ? std::ldexp(1.0, 70) : e)}};
+  p.t2 = Triangle{{in_frame(f, px, py), in_frame(f, px + g, py - 2 * g), in_frame(f, px + 2 * g, py - g)}};
+  return p;
+}
+
+// Coplanar pairs with small integer coordinates in a general plane, touching or not: T2's first
+// vertex on T1's vertex, on an edge's midpoint, on the line of an edge beyond it, or anywhere.
+TrianglePair coplanar_touching(GenRng& r) {
+  const auto f = random_frame(r);
+  auto pt = [&] { return std::array<double, 2>{2.0 * r.integer(-6, 6), 2.0 * r.integer(-6, 6)}; };
+  std::array<double, 2> a = pt(), b = pt(), c = pt(), p = pt(), q = pt(), s = pt();
+  switch (r.integer(0, 3)) {
+    case 0: p = a; break;
+    case 1: p = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}; break;
+    case 2:  // an edge on the line of T1's edge ab, beyond b
+      p = {2 * b[0] - a[0], 2 * b[1] - a[1]};
+      q = {3 * b[0] - 2 * a[0], 3 * b[1] - 2 * a[1]};
+      break;
+    default: break;
+  }
+  TrianglePair out;
+  out.t1 = Triangle{{in_frame(f, a[0], a[1]), in_frame(f, b[0], b[1]), in_frame(f, c[0], c[1])}};
+  out.t2 = Triangle{{in_frame(f, p[0], p[1]), in_frame(f, q[0], q[1]), in_frame(f, s[0], s[1])}};
+  return out;
+}
+
+}  // namespace
+
+TEST(CoplanarOnePair, EveryRouteAgreesWithTheOracle) {
+  GenRng r(31);
+  std::vector<TrianglePair> grid, converted, wide;
+  for (int i = 0; i < 300; ++i) {
+    const TrianglePair p = coplanar_touching(r);
+    grid.push_back(p);
+    converted.push_back(translated(p, V(std::ldexp(1.0, 30), -std::ldexp(1.0, 31), std::ldexp(3.0, 29))));
+  }
+  for (int i = 0; i < 24; ++i)
+    for (int side : {1, -1}) {
+      converted.push_back(hair_from_edge(r, side, false));
+      wide.push_back(hair_from_edge(r, side, true));
+    }
+  for (auto* set : {&converted, &wide}) {  // every vertex and argument order of the hairs
+    std::vector<TrianglePair> all;
+    for (std::size_t i = 0; i < set->size(); ++i)
+      if (i >= 300 || set == &wide) {
+        for (const auto& v : all_orders((*set)[i])) all.push_back(v);
+      } else {
+        all.push_back((*set)[i]);
+      }
+    *set = all;
+  }
+  expect_all_paths_agree(grid, "coplanar on the grid");
+  ex::intexact::counts() = {};
+  expect_all_paths_agree(converted, "coplanar, the shared conversion");
+  EXPECT_GT(ex::intexact::counts().pair2, 1000u);  // the hairs' ±1 signs come from det2_pair_sign
+  ex::intexact::counts() = {};
+  expect_all_paths_agree(wide, "coplanar, a 70-bit span");
+  EXPECT_GT(ex::intexact::counts().fast2, 1000u);  // refused by the shared conversion: per call
+}
+
+// The second pass's 2-D grid (kernel_pass2.inc): flat pairs off the 3-D grid whose projected
+// coordinates fit 25 bits are decided in lanes, touching included; at 26 bits plain double can
+// round an orientation of +1 to 0 (the pair below: T2 one unit outside T1's edge u -> w), so they
+// must not be.
+TEST(CoplanarPass2, TheTwoDimensionalGridIsExactAndTaken) {
+  GenRng r(32);
+  std::vector<TrianglePair> flat;
+  for (int i = 0; i < 4096; ++i) {
+    auto pt = [&] { return std::array<double, 2>{std::ldexp(2.0 * r.integer(-1 << 20, 1 << 20), -20),
+                                                 std::ldexp(2.0 * r.integer(-1 << 20, 1 << 20), -20)}; };
+    std::array<double, 2> a = pt(), b = pt(), c = pt(), p = pt(), q = pt(), s = pt();
+    if (i % 2) p = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2};  // on T1's edge: a zero orientation
+    const int k = i % 3;
+    const double level = 0.1;
+    auto put = [&](const std::array<double, 2>& xy) {
+      V v;
+      v[k] = level, v[(k + 1) % 3] = xy[0], v[(k + 2) % 3] = xy[1];
+      return v;
+    };
+    flat.push_back({Triangle{{put(a), put(b), put(c)}}, Triangle{{put(p), put(q), put(s)}}});
+  }
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    const ex::Stats st = run_overlap(isa, flat);
+    EXPECT_LT(st.scalar, 4096u / 50) << ex::to_string(isa) << ": only degenerate pairs go on";
+  }
+  expect_all_paths_agree(std::vector<TrianglePair>(flat.begin(), flat.begin() + 1024), "flat on the 2-D grid");
+  // 26 bits: o2(u, w, p) = +1 exactly, 0 in double; T1's third vertex on the other side, so T2
+  // (p and two points further out) is strictly outside: disjoint
+  const double u[2] = {-61731223, -55978922}, w[2] = {63032092, 64558602}, p[2] = {16672788, 19769509};
+  std::vector<TrianglePair> edge;
+  for (int k = 0; k < 3; ++k) {
+    auto put = [&](double x, double y) {
+      V v;
+      v[k] = 3, v[(k + 1) % 3] = x, v[(k + 2) % 3] = y;
+      return v;
+    };
+    const TrianglePair t{Triangle{{put(u[0], u[1]), put(w[0], w[1]), put(0, -33554432)}},
+                         Triangle{{put(p[0], p[1]), put(p[0], p[1] + 1000), put(p[0] - 1000, p[1])}}};
+    ASSERT_FALSE(oracle_label(t).overlap);
+    for (const auto& v : all_orders(t)) edge.push_back(v);
+  }
+  expect_all_paths_agree(edge, "one unit outside at 26 bits");
+}
