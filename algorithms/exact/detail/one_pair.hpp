@@ -350,9 +350,10 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   int known[6];
   for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
-  // T1 in π2: coplanar when both are proper, decided in 2-D (coplanar.hpp); degenerate input
-  // goes on to the classification
-  if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
+  // T1 in π2 off the grid: coplanar when both are proper, decided in 2-D (coplanar.hpp);
+  // degenerate input goes on to the classification. On the grid (every zero above asked for the
+  // grid test, so its state is known) the classification's plain-double branch is cheaper.
+  if (Relation rel; !any1 && g.state != 1 && coplanar_known<kRelation>(c, g, rel)) {
     if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
     return answer_with(rel);
   }
