@@ -423,10 +423,9 @@ TEST(BenchCli, QuickRunsEndToEndAndWritesJsonWithTheContextKeys) {
   const auto dir = std::filesystem::temp_directory_path() / ("tritri-bench-cli-test-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const auto json = dir / "quick.json", log = dir / "quick.log";
-  const std::string command = std::string(TRITRI_BINARY_DIR) +
-                              "/bin/tritri bench --quick --workload ratio:0 --workload ratio:0.5 --workload ratio:1 "
-                              "--workload type --json '" +
-                              json.string() + "' > '" + log.string() + "' 2>&1";
+  const std::string command = std::string(TRITRI_BINARY_DIR) + "/bin/tritri bench --quick --workload ratio:0 " +
+                              "--workload ratio:0.5 --workload ratio:1 --workload type --json '" + json.string() +
+                              "' > '" + log.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream log_in(log);
   const std::string output((std::istreambuf_iterator<char>(log_in)), std::istreambuf_iterator<char>());
