@@ -17,21 +17,7 @@
 
 #include "algorithms/exact/detail/classify.hpp"
 
-#include <cstdint>
-
 namespace tritri::exact::detail {
-
-// sign o2(a, b, v; i, j) = (b-a)_i (v-a)_j - (b-a)_j (v-a)_i for the points with indices a, b, v
-// (0..5) of a converted pair: every |X| < 2^61, so the differences are below 2^62 (int64), the
-// products below 2^124 and their difference below 2^125 (__int128). A positive scale per axis
-// leaves the sign unchanged.
-inline int det2_pair_sign(const intexact::PairInt61& p, int i, int j, int a, int b, int v) {
-  ++intexact::counts().pair2;
-  const std::int64_t bi = p.x[i][b] - p.x[i][a], bj = p.x[j][b] - p.x[j][a];
-  const std::int64_t vi = p.x[i][v] - p.x[i][a], vj = p.x[j][v] - p.x[j][a];
-  const intexact::i128 m = static_cast<intexact::i128>(bi) * vj - static_cast<intexact::i128>(bj) * vi;
-  return (m > 0) - (m < 0);
-}
 
 // The pair (18 coordinates at c, finite) when T1's exact signs against π2 are all zero: true and
 // `out` set when both triangles are proper (then they are coplanar), false when a triangle's
@@ -61,7 +47,7 @@ bool coplanar_known(const double* c, Grid& g, Relation& out) {
     if (value > t) return 1;
     if (value < -t) return -1;
     if (grid) return 0;
-    if (g.converted()) return det2_pair_sign(g.x, i, j, a, b, v);
+    if (g.converted()) return intexact::det2_pair_sign(g.x, i, j, a, b, v);
     return Filtered::dynamic2(c + 3 * a, c + 3 * b, c + 3 * v, i, j);
   };
   const double n1 = k == 0 ? nx : (k == 1 ? ny : nz);

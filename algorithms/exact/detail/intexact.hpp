@@ -118,6 +118,18 @@ inline int det3_pair_sign(const PairInt61& p, const int (&i)[6]) {
   return det3_rows_sign(d);
 }
 
+// sign o2(a, b, v; i, j) = (b-a)_i (v-a)_j - (b-a)_j (v-a)_i for the points with indices a, b, v
+// (0..5) of a converted pair: every |X| < 2^61, so the differences are below 2^62 (int64), the
+// products below 2^124 and their difference below 2^125 (__int128). A positive scale per axis
+// leaves the sign unchanged.
+inline int det2_pair_sign(const PairInt61& p, int i, int j, int a, int b, int v) {
+  ++counts().pair2;
+  const std::int64_t bi = p.x[i][b] - p.x[i][a], bj = p.x[j][b] - p.x[j][a];
+  const std::int64_t vi = p.x[i][v] - p.x[i][a], vj = p.x[j][v] - p.x[j][a];
+  const i128 m = static_cast<i128>(bi) * vj - static_cast<i128>(bj) * vi;
+  return (m > 0) - (m < 0);
+}
+
 // The middle path: |X| < 2^125, differences < 2^126 (2 limbs), cross terms < 2^253 (4 limbs),
 // the dot product < 2^381 (6 limbs). s: the six points split, q: each axis's lowest exponent.
 inline int det3_middle(const Split (&s)[6][3], const int (&q)[3]) {
