@@ -34,8 +34,9 @@ namespace tritri::exact::detail {
 // The signed distances the filter computed and the bound they share.
 struct PairSigns {
   double bound;
-  double s1[3];  // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
-  double s2[3];  // T2's vertices against π1
+  double s1[3];   // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
+  double s2[3];   // T2's vertices against π1
+  unsigned open;  // bit k: s1[k] within the bound, bit 3 + k: s2[k] (neither > B nor < -B)
 };
 
 // (x_k - a)·((b - a)×(c - a)) for the three vertices x_k at `pts` and the plane of a b c at `pl`,
@@ -106,32 +107,55 @@ template <bool kRelation>
     if ((pos1 == 7u) | (neg1 == 7u)) return 0;
   plane_values(c, c + 9, ps.s2);  // step 2: T2 against π1
   const unsigned pos2 = above(ps.s2, b), neg2 = below(ps.s2, b);
+  const unsigned open = (~(pos1 | neg1) & 7u) | (~(pos2 | neg2) & 7u) << 3;
   if constexpr (!kRelation) {
     if ((pos2 == 7u) | (neg2 == 7u)) return 0;
   } else if ((pos1 == 7u) | (neg1 == 7u) | (pos2 == 7u) | (neg2 == 7u)) {
     // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
     // proves its triangle proper) and the planes certainly not parallel; else undecided
     const bool proper = ((pos1 | neg1) != 0u) & ((pos2 | neg2) != 0u);
-    return proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b)) ? 0 : -1;
+    if (proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b))) return 0;
+    ps.open = open;
+    return -1;
   }
-  if (((pos1 | neg1) != 7u) | ((pos2 | neg2) != 7u)) return -1;  // a sign within the bound
+  ps.open = open;
+  if (open != 0u) return -1;  // a sign within the bound
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
   if ((g1 > b) | (g2 > b)) return 0;
   return (g1 < -b) & (g2 < -b) ? 1 : -1;
 }
 
-// Bit 3i + j: T1's vertex i equals T2's vertex j (exact comparison of the coordinates: -0 equals +0).
-inline unsigned shared_vertices(const double* c) {
-  Double2 xy[6];
-  for (int v = 0; v < 6; ++v) std::memcpy(&xy[v], c + 3 * v, sizeof xy[v]);
+// The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on
+// π2, so T1's vertex i equal to T2's vertex j has an exact value 0 against π2, and likewise
+// against π1; B bounds the error of both values, so neither is certain (algorithms/exact/README.md,
+// "Shared vertices from the filter's values").
+inline unsigned shared_candidates(unsigned open) {
+  // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
+  const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
+  return rows & (open >> 3) * 0x49u;
+}
+
+// Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
+// of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
+inline unsigned shared_vertices(const double* c, unsigned candidates) {
+  static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
   unsigned bits = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const Long2 e = xy[i] == xy[3 + j];
-      bits |= static_cast<unsigned>(((e[0] & e[1]) != 0) & (c[3 * i + 2] == c[9 + 3 * j + 2])) << (3 * i + j);
-    }
+  for (unsigned m = candidates; m != 0u; m &= m - 1u) {
+    const int k = __builtin_ctz(m);
+    const double* a = c + kRow[k];
+    const double* b = c + kCol[k];
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) bits |= 1u << k;
+  }
   return bits;
+}
+
+// All 18 coordinates finite. A finite bound and six values of which none is NaN prove it (a NaN
+// coordinate makes three values NaN, an infinite one the bound +inf: algorithms/exact/README.md,
+// "Finiteness from the filter"); else the coordinates themselves decide.
+inline bool finite_after_filter(const double* c, const PairSigns& ps) {
+  const double sum = ((ps.s1[0] + ps.s1[1]) + (ps.s1[2] + ps.s2[0])) + (ps.s2[1] + ps.s2[2]);
+  return ((ps.bound < __builtin_inf()) & (sum == sum)) || finite18(c);
 }
 
 // The sign of a filter value when certain, else 0.
@@ -252,8 +276,8 @@ Relation crossing_known(const double* c, const int s1[3], const int s2[3], doubl
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
-  if (!finite18(c)) return solve<kRelation>(pair, route);  // declines
-  if (const unsigned bits = shared_vertices(c); bits != 0u) {
+  if (!finite_after_filter(c, ps)) return solve<kRelation>(pair, route);  // declines
+  if (const unsigned bits = shared_vertices(c, shared_candidates(ps.open)); bits != 0u) {
     const Relation rel = kRelation ? shared_relation(bits, ps) : Relation::touch_point;  // a common point
     if (rel != Relation::unsupported) {
       if (route) *route = Route::shared;
