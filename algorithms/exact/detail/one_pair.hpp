@@ -33,6 +33,7 @@ namespace tritri::exact::detail {
 
 // The signed distances the filter computed and the bound they share.
 struct PairSigns {
+  Box box;  // of the six points
   double bound;
   double s1[3];   // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
   double s2[3];   // T2's vertices against π1
@@ -90,16 +91,13 @@ inline bool certainly_slanted(const double s[3], double b) {
 // values and the bound).
 template <bool kRelation>
 [[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
-  double b;
-  if constexpr (!kRelation) {
-    // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
-    // answer could be `parallel` or `degenerate`, so there the bound comes first.
-    const Box b1 = box_of(c), b2 = box_of(c + 9);
+  const Box b1 = box_of(c), b2 = box_of(c + 9);
+  // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
+  // answer could be `parallel` or `degenerate`, so there the bound comes first.
+  if constexpr (!kRelation)
     if (boxes_apart(b1, b2) && finite18(c)) return 0;
-    b = bound_of_boxes(b1, b2);
-  } else {
-    b = one_pair_bound(c);
-  }
+  const Box u = union_of(b1, b2);
+  const double b = bound_of_box(u);
   ps.bound = b;
   plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
   const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
@@ -115,10 +113,10 @@ template <bool kRelation>
     // proves its triangle proper) and the planes certainly not parallel; else undecided
     const bool proper = ((pos1 | neg1) != 0u) & ((pos2 | neg2) != 0u);
     if (proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b))) return 0;
-    ps.open = open;
+    ps.open = open, ps.box = u;
     return -1;
   }
-  ps.open = open;
+  ps.open = open, ps.box = u;
   if (open != 0u) return -1;  // a sign within the bound
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
@@ -187,18 +185,12 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // The kernel's grid test (grid_lanes) for one pair: max|coordinate| m in [2^-344, 2^300) and every
 // coordinate x a multiple of 2^q, q = e - 14 for 2^e <= m < 2^(e+1): fl(fl(x + C) - C) = x with
 // C = 1.5·2^(q+52) built from m's exponent bits (algorithms/exact/README.md, "The grid case (pass 2
-// and `Plain`)"). Then every value the filter computed is exact.
-inline bool on_grid(const double* c) {
+// and `Plain`)"). Then every value the filter computed is exact. `m` is max|coordinate| (the
+// filter's box has it: box_magnitudes).
+inline bool on_grid(const double* c, double m) {
+  if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
   Double2 v[9];
   load9(c, v);
-  const Long2 no_sign = {0x7fffffffffffffffll, 0x7fffffffffffffffll};
-  Double2 m2 = {0.0, 0.0};
-  for (int i = 0; i < 9; ++i) {
-    const Double2 a = reinterpret_cast<Double2>(reinterpret_cast<Long2>(v[i]) & no_sign);  // |x|
-    m2 = a > m2 ? a : m2;
-  }
-  const double m = dmax(m2[0], m2[1]);
-  if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
   std::uint64_t bits;
   std::memcpy(&bits, &m, sizeof bits);
   bits = ((bits & 0x7ff0000000000000ull) + (38ull << 52)) | (1ull << 51);
@@ -212,18 +204,22 @@ inline bool on_grid(const double* c) {
 
 // The pair's grid test and its shared integer conversion, each evaluated at most once per pair
 // and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes).
+// The largest |coordinate| per axis comes from the filter's box (finite input: exact).
 struct LazyGrid {
-  LazyGrid(const double* pair, int grid) : c(pair), state(grid) {}  // x left unset until needed
+  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) {  // x unset until needed
+    box_magnitudes(box, mag);
+  }
   const double* c;
   int state;
   int ints = -1;
+  double mag[3];
   intexact::PairInt61 x;
   bool on() {
-    if (state < 0) state = on_grid(c) ? 1 : 0;
+    if (state < 0) state = on_grid(c, dmax(mag[0], dmax(mag[1], mag[2]))) ? 1 : 0;
     return state != 0;
   }
   bool converted() {
-    if (ints < 0) ints = intexact::pair_to_int61(c, x) ? 1 : 0;
+    if (ints < 0) ints = intexact::pair_to_int61(c, mag, x) ? 1 : 0;
     return ints != 0;
   }
 };
@@ -233,15 +229,17 @@ struct LazyGrid {
 // value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
 // the grid the value is exact ("The grid case"); else the pair's shared integer conversion when
 // every axis fits ("Zeros off the grid"); else the per-call filters and the integer engine.
-// (The certain case inline, the rest out of line: most calls are certain.)
+// (The certain case and a grid already known inline, the rest out of line: most calls are one
+// of those.)
 [[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
-  if (g.on()) return sgn(v);
+  if (g.on()) return sgn(v);  // the first value within the bound tests the grid
   if (g.converted()) return intexact::det3_pair_sign(g.x, {a, b, a, cc, a, d});
   return Filtered::o3(g.c + 3 * a, g.c + 3 * b, g.c + 3 * cc, g.c + 3 * d);
 }
 [[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, int a, int b, int cc, int d) {
   if (v > bound) return 1;
   if (v < -bound) return -1;
+  if (g.state == 1) return sgn(v);  // on the grid, known: no call
   return sign_o3_within(v, g, a, b, cc, d);
 }
 
@@ -284,7 +282,7 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
       return answer_with(rel);
     }
   }
-  LazyGrid g{c, grid ? 1 : -1};
+  LazyGrid g{c, ps.box, grid ? 1 : -1};
   const double b = ps.bound;
   int known[6];
   for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
