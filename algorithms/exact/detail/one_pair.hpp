@@ -189,16 +189,18 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // filter's box has it: box_magnitudes).
 inline bool on_grid(const double* c, double m) {
   if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
-  Double2 v[9];
-  load9(c, v);
   std::uint64_t bits;
   std::memcpy(&bits, &m, sizeof bits);
   bits = ((bits & 0x7ff0000000000000ull) + (38ull << 52)) | (1ull << 51);
   double big;
   std::memcpy(&big, &bits, sizeof big);
   const Double2 big2 = {big, big};
-  Long2 grid = (v[0] + big2) - big2 == v[0];
-  for (int i = 1; i < 9; ++i) grid &= (v[i] + big2) - big2 == v[i];
+  Long2 grid = {-1, -1};
+  for (int i = 0; i < 9; ++i) {  // two coordinates at a time, read once
+    Double2 v;
+    std::memcpy(&v, c + 2 * i, sizeof v);
+    grid &= (v + big2) - big2 == v;
+  }
   return (grid[0] & grid[1]) != 0;
 }
 
@@ -250,8 +252,9 @@ Relation crossing_known(const double* c, const int s1[3], const int s2[3], doubl
   int l1, f1, l2, f2;
   lone_vertex(s1, l1, f1);
   lone_vertex(s2, l2, f2);
-  int p1 = l1, q1 = (l1 + 1) % 3, r1 = (l1 + 2) % 3;  // point indices 0..5
-  int p2 = 3 + l2, q2 = 3 + (l2 + 1) % 3, r2 = 3 + (l2 + 2) % 3;
+  static constexpr int kSucc[4] = {1, 2, 0, 1};  // (l + 1) % 3 at l, (l + 2) % 3 at l + 1
+  int p1 = l1, q1 = kSucc[l1], r1 = kSucc[l1 + 1];  // point indices 0..5
+  int p2 = 3 + l2, q2 = 3 + kSucc[l2], r2 = 3 + kSucc[l2 + 1];
   if (f2 < 0) std::swap(q1, r1);  // flips π1 so that p2 is on its positive side
   if (f1 < 0) std::swap(q2, r2);  // flips π2 so that p1 is on its positive side
   P P1 = c + 3 * p1, Q1 = c + 3 * q1, R1 = c + 3 * r1, P2 = c + 3 * p2, Q2 = c + 3 * q2, R2 = c + 3 * r2;
