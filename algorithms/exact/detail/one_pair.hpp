@@ -116,12 +116,18 @@ template <bool kRelation>
     ps.open = open, ps.box = u;
     return -1;
   }
-  ps.open = open, ps.box = u;
-  if (open != 0u) return -1;  // a sign within the bound
+  if (open != 0u) {  // a sign within the bound
+    ps.open = open, ps.box = u;
+    return -1;
+  }
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
   if ((g1 > b) | (g2 > b)) return 0;
-  return (g1 < -b) & (g2 < -b) ? 1 : -1;
+  if ((g1 < -b) & (g2 < -b)) return 1;
+  // G1 or G2 within the bound: the box again rather than kept through step 3, where most pairs
+  // are decided
+  ps.open = 0u, ps.box = union_of(box_of(c), box_of(c + 9));
+  return -1;
 }
 
 // The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on
@@ -136,6 +142,8 @@ inline unsigned shared_candidates(unsigned open) {
 
 // Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
 // of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
+// kFirst: only whether there is one (the overlap level), the first found alone.
+template <bool kFirst>
 inline unsigned shared_vertices(const double* c, unsigned candidates) {
   static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
   unsigned bits = 0;
@@ -143,7 +151,10 @@ inline unsigned shared_vertices(const double* c, unsigned candidates) {
     const int k = __builtin_ctz(m);
     const double* a = c + kRow[k];
     const double* b = c + kCol[k];
-    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) bits |= 1u << k;
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) {
+      bits |= 1u << k;
+      if (kFirst) break;
+    }
   }
   return bits;
 }
@@ -278,7 +289,7 @@ template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
   if (!finite_after_filter(c, ps)) return solve<kRelation>(pair, route);  // declines
-  if (const unsigned bits = shared_vertices(c, shared_candidates(ps.open)); bits != 0u) {
+  if (const unsigned bits = shared_vertices<!kRelation>(c, shared_candidates(ps.open)); bits != 0u) {
     const Relation rel = kRelation ? shared_relation(bits, ps) : Relation::touch_point;  // a common point
     if (rel != Relation::unsupported) {
       if (route) *route = Route::shared;
