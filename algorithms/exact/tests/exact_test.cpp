@@ -867,6 +867,32 @@ TEST(OnePair, LoneVertexTableMeetsItsDefinition) {
       }
 }
 
+TEST(OnePair, BoxMagnitudesAreTheLargestCoordinates) {
+  // the grid test and the shared conversion take each axis' largest |coordinate| from the
+  // filter's box: it must be the one over the six points, whichever sign holds it, and the
+  // conversion from it the same as the conversion computing its own
+  GenRng r(41);
+  for (int n = 0; n < 3000; ++n) {
+    TrianglePair p = n % 3 == 0 ? random_pair(r) : scaled(small_int_pair(r, 9), static_cast<int>(r.integer(-60, 60)));
+    if (n % 2) p = translated(p, V(-std::ldexp(1.0, 20), 0.0, std::ldexp(1.0, 18)));  // a negative axis
+    double c[18];
+    coords(p, c);
+    double mag[3];
+    ex::detail::box_magnitudes(ex::detail::union_of(ex::detail::box_of(c), ex::detail::box_of(c + 9)), mag);
+    for (int k = 0; k < 3; ++k) {
+      double m = 0.0;
+      for (int v = 0; v < 6; ++v) m = std::max(m, std::fabs(c[3 * v + k]));
+      ASSERT_EQ(mag[k], m) << n << " axis " << k;
+    }
+    ex::intexact::PairInt61 own, given;
+    const bool ok = ex::intexact::pair_to_int61(c, own);
+    ASSERT_EQ(ex::intexact::pair_to_int61(c, mag, given), ok) << n;
+    if (ok)
+      for (int k = 0; k < 3; ++k)
+        for (int v = 0; v < 6; ++v) ASSERT_EQ(given.x[k][v], own.x[k][v]) << n;
+  }
+}
+
 TEST(ZerosOffTheGrid, OnePairPathAgreesWithTheOracle) {
   // the same pairs and their images with a touching configuration put into the triangles: each
   // one-pair and batch answer against the oracle; the shared conversion must decide some signs
