@@ -133,7 +133,7 @@ template <bool kRelation>
 // The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on
 // π2, so T1's vertex i equal to T2's vertex j has an exact value 0 against π2, and likewise
 // against π1; B bounds the error of both values, so neither is certain (algorithms/exact/README.md,
-// "Shared vertices from the filter's values").
+// "The fixed cost of `finish`").
 inline unsigned shared_candidates(unsigned open) {
   // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
   const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
@@ -161,7 +161,7 @@ inline unsigned shared_vertices(const double* c, unsigned candidates) {
 
 // All 18 coordinates finite. A finite bound and six values of which none is NaN prove it (a NaN
 // coordinate makes three values NaN, an infinite one the bound +inf: algorithms/exact/README.md,
-// "Finiteness from the filter"); else the coordinates themselves decide.
+// "The fixed cost of `finish`"); else the coordinates themselves decide.
 inline bool finite_after_filter(const double* c, const PairSigns& ps) {
   const double sum = ((ps.s1[0] + ps.s1[1]) + (ps.s1[2] + ps.s2[0])) + (ps.s2[1] + ps.s2[2]);
   return ((ps.bound < __builtin_inf()) & (sum == sum)) || finite18(c);
