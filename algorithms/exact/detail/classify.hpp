@@ -26,6 +26,7 @@
 #include "algorithms/exact/detail/predicates.hpp"
 #include "tritri/answers.hpp"
 
+#include <array>
 #include <utility>
 
 namespace tritri::exact::detail {
@@ -293,14 +294,33 @@ Relation coplanar(const Tri& a, const Tri& b, const int na[3], const int nb[3]) 
 // ---- Guigue–Devillers' canonical order ----
 
 // The lone vertex l and the sign f (±1) with f·s[l] >= 0 >= f·s[l+1], f·s[l+2], and either
-// f·s[l] > 0 or both others strictly negative. s is neither all zero nor one-sided.
+// f·s[l] > 0 or both others strictly negative (the first such l, then f = 1 before -1). s is
+// neither all zero nor one-sided.
+constexpr bool is_lone(const int s[3], int l, int f) {
+  const int p = f * s[l], q = f * s[(l + 1) % 3], r = f * s[(l + 2) % 3];
+  return p >= 0 && q <= 0 && r <= 0 && (p > 0 || (q < 0 && r < 0));
+}
+
+// lone_vertex's answer per sign triple, indexed by 9(s0 + 1) + 3(s1 + 1) + s2 + 1; the patterns
+// it is not asked about (all zero, one-sided) hold l = 0, f = 1.
+struct LoneFlip {
+  signed char l, f;
+};
+constexpr auto kLoneFlip = [] {
+  std::array<LoneFlip, 27> t{};
+  for (int k = 0; k < 27; ++k) {
+    const int s[3] = {k / 9 - 1, k / 3 % 3 - 1, k % 3 - 1};
+    t[k] = {0, 1};
+    for (int l = 2; l >= 0; --l)  // downwards, so that the first match is the one kept
+      for (int f = -1; f <= 1; f += 2)
+        if (is_lone(s, l, f)) t[k] = {static_cast<signed char>(l), static_cast<signed char>(f)};
+  }
+  return t;
+}();
+
 inline void lone_vertex(const int s[3], int& l, int& f) {
-  for (l = 0; l < 3; ++l)
-    for (f = 1; f >= -1; f -= 2) {
-      const int p = f * s[l], q = f * s[(l + 1) % 3], r = f * s[(l + 2) % 3];
-      if (p >= 0 && q <= 0 && r <= 0 && (p > 0 || (q < 0 && r < 0))) return;
-    }
-  l = 0, f = 1;  // unreachable for the patterns allowed
+  const LoneFlip e = kLoneFlip[9 * (s[0] + 1) + 3 * (s[1] + 1) + s[2] + 1];
+  l = e.l, f = e.f;
 }
 
 inline int zero_count(const int s[3]) { return (s[0] == 0) + (s[1] == 0) + (s[2] == 0); }

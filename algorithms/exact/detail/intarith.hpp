@@ -114,19 +114,15 @@ inline std::int64_t scaled64(const Split& s, int q) {
 // 2^(top-1) <= max|x_i| < 2^top, when every x_i is a multiple of 2^(top-61) (then |X_i| < 2^61).
 // False when some x_i is not (its bits reach below 2^(top-61): the span exceeds 61) or when
 // the scale 2^(61-top) is not a normal double (tiny maxima): the caller takes the general path.
-inline bool axis_to_int61(const double* const* v, int n, std::int64_t* x) {
-  double m = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double a = *v[i] < 0 ? -*v[i] : *v[i];
-    m = a > m ? a : m;
-  }
-  std::uint64_t bits;
-  std::memcpy(&bits, &m, sizeof bits);
-  const int e = static_cast<int>(bits >> 52);  // biased exponent of m (m >= 0, finite)
+// `m` is max|x_i| (+0 or -0 when all are zero), from the caller when it already has it.
+inline bool axis_to_int61_with_max(const double* const* v, int n, double m, std::int64_t* x) {
   if (m == 0.0) {
     for (int i = 0; i < n; ++i) x[i] = 0;
     return true;
   }
+  std::uint64_t bits;
+  std::memcpy(&bits, &m, sizeof bits);
+  const int e = static_cast<int>(bits >> 52);                 // biased exponent of m (m > 0, finite)
   if (e < 62) return false;                                   // 2^(61-top) would not be normal
   const std::uint64_t scale_bits = static_cast<std::uint64_t>(61 - (e - 1022) + 1023) << 52;
   double scale;
@@ -138,6 +134,15 @@ inline bool axis_to_int61(const double* const* v, int n, std::int64_t* x) {
     ok &= static_cast<double>(x[i]) == s && (s != 0.0 || *v[i] == 0.0);
   }
   return ok;
+}
+
+inline bool axis_to_int61(const double* const* v, int n, std::int64_t* x) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double a = *v[i] < 0 ? -*v[i] : *v[i];
+    m = a > m ? a : m;
+  }
+  return axis_to_int61_with_max(v, n, m, x);
 }
 
 // ---------------------------------------------------------------- middle path: fixed limbs

@@ -109,6 +109,16 @@ inline bool pair_to_int61(const double* c, PairInt61& out) {
   return true;
 }
 
+// The same with each axis' largest |coordinate| over the six points given (`mag`, exact: the
+// one-pair filter's box has it).
+inline bool pair_to_int61(const double* c, const double (&mag)[3], PairInt61& out) {
+  for (int k = 0; k < 3; ++k) {
+    const double* v[6] = {c + k, c + 3 + k, c + 6 + k, c + 9 + k, c + 12 + k, c + 15 + k};
+    if (!axis_to_int61_with_max(v, 6, mag[k], out.x[k])) return false;
+  }
+  return true;
+}
+
 // sign det[P1-P0, P3-P2, P5-P4] for the points with indices i[0..5] (0..5) of a converted pair.
 inline int det3_pair_sign(const PairInt61& p, const int (&i)[6]) {
   ++counts().pair3;

@@ -33,9 +33,11 @@ namespace tritri::exact::detail {
 
 // The signed distances the filter computed and the bound they share.
 struct PairSigns {
+  Box box;  // of the six points
   double bound;
-  double s1[3];  // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
-  double s2[3];  // T2's vertices against π1
+  double s1[3];   // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
+  double s2[3];   // T2's vertices against π1
+  unsigned open;  // bit k: s1[k] within the bound, bit 3 + k: s2[k] (neither > B nor < -B)
 };
 
 // (x_k - a)·((b - a)×(c - a)) for the three vertices x_k at `pts` and the plane of a b c at `pl`,
@@ -89,16 +91,13 @@ inline bool certainly_slanted(const double s[3], double b) {
 // values and the bound).
 template <bool kRelation>
 [[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
-  double b;
-  if constexpr (!kRelation) {
-    // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
-    // answer could be `parallel` or `degenerate`, so there the bound comes first.
-    const Box b1 = box_of(c), b2 = box_of(c + 9);
+  const Box b1 = box_of(c), b2 = box_of(c + 9);
+  // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
+  // answer could be `parallel` or `degenerate`, so there the bound comes first.
+  if constexpr (!kRelation)
     if (boxes_apart(b1, b2) && finite18(c)) return 0;
-    b = bound_of_boxes(b1, b2);
-  } else {
-    b = one_pair_bound(c);
-  }
+  const Box u = union_of(b1, b2);
+  const double b = bound_of_box(u);
   ps.bound = b;
   plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
   const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
@@ -106,32 +105,66 @@ template <bool kRelation>
     if ((pos1 == 7u) | (neg1 == 7u)) return 0;
   plane_values(c, c + 9, ps.s2);  // step 2: T2 against π1
   const unsigned pos2 = above(ps.s2, b), neg2 = below(ps.s2, b);
+  const unsigned open = (~(pos1 | neg1) & 7u) | (~(pos2 | neg2) & 7u) << 3;
   if constexpr (!kRelation) {
     if ((pos2 == 7u) | (neg2 == 7u)) return 0;
   } else if ((pos1 == 7u) | (neg1 == 7u) | (pos2 == 7u) | (neg2 == 7u)) {
     // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
     // proves its triangle proper) and the planes certainly not parallel; else undecided
     const bool proper = ((pos1 | neg1) != 0u) & ((pos2 | neg2) != 0u);
-    return proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b)) ? 0 : -1;
+    if (proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b))) return 0;
+    ps.open = open, ps.box = u;
+    return -1;
   }
-  if (((pos1 | neg1) != 7u) | ((pos2 | neg2) != 7u)) return -1;  // a sign within the bound
+  if (open != 0u) {  // a sign within the bound
+    ps.open = open, ps.box = u;
+    return -1;
+  }
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
   if ((g1 > b) | (g2 > b)) return 0;
-  return (g1 < -b) & (g2 < -b) ? 1 : -1;
+  if ((g1 < -b) & (g2 < -b)) return 1;
+  // G1 or G2 within the bound: the box again rather than kept through step 3, where most pairs
+  // are decided
+  ps.open = 0u, ps.box = union_of(box_of(c), box_of(c + 9));
+  return -1;
 }
 
-// Bit 3i + j: T1's vertex i equals T2's vertex j (exact comparison of the coordinates: -0 equals +0).
-inline unsigned shared_vertices(const double* c) {
-  Double2 xy[6];
-  for (int v = 0; v < 6; ++v) std::memcpy(&xy[v], c + 3 * v, sizeof xy[v]);
+// The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on
+// π2, so T1's vertex i equal to T2's vertex j has an exact value 0 against π2, and likewise
+// against π1; B bounds the error of both values, so neither is certain (algorithms/exact/README.md,
+// "The fixed cost of `finish`").
+inline unsigned shared_candidates(unsigned open) {
+  // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
+  const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
+  return rows & (open >> 3) * 0x49u;
+}
+
+// Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
+// of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
+// kFirst: only whether there is one (the overlap level), the first found alone.
+template <bool kFirst>
+inline unsigned shared_vertices(const double* c, unsigned candidates) {
+  static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
   unsigned bits = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const Long2 e = xy[i] == xy[3 + j];
-      bits |= static_cast<unsigned>(((e[0] & e[1]) != 0) & (c[3 * i + 2] == c[9 + 3 * j + 2])) << (3 * i + j);
+  for (unsigned m = candidates; m != 0u; m &= m - 1u) {
+    const int k = __builtin_ctz(m);
+    const double* a = c + kRow[k];
+    const double* b = c + kCol[k];
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) {
+      bits |= 1u << k;
+      if (kFirst) break;
     }
+  }
   return bits;
+}
+
+// All 18 coordinates finite. A finite bound and six values of which none is NaN prove it (a NaN
+// coordinate makes three values NaN, an infinite one the bound +inf: algorithms/exact/README.md,
+// "The fixed cost of `finish`"); else the coordinates themselves decide.
+inline bool finite_after_filter(const double* c, const PairSigns& ps) {
+  const double sum = ((ps.s1[0] + ps.s1[1]) + (ps.s1[2] + ps.s2[0])) + (ps.s2[1] + ps.s2[2]);
+  return ((ps.bound < __builtin_inf()) & (sum == sum)) || finite18(c);
 }
 
 // The sign of a filter value when certain, else 0.
@@ -163,17 +196,9 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // The kernel's grid test (grid_lanes) for one pair: max|coordinate| m in [2^-344, 2^300) and every
 // coordinate x a multiple of 2^q, q = e - 14 for 2^e <= m < 2^(e+1): fl(fl(x + C) - C) = x with
 // C = 1.5·2^(q+52) built from m's exponent bits (algorithms/exact/README.md, "The grid case (pass 2
-// and `Plain`)"). Then every value the filter computed is exact.
-inline bool on_grid(const double* c) {
-  Double2 v[9];
-  load9(c, v);
-  const Long2 no_sign = {0x7fffffffffffffffll, 0x7fffffffffffffffll};
-  Double2 m2 = {0.0, 0.0};
-  for (int i = 0; i < 9; ++i) {
-    const Double2 a = reinterpret_cast<Double2>(reinterpret_cast<Long2>(v[i]) & no_sign);  // |x|
-    m2 = a > m2 ? a : m2;
-  }
-  const double m = dmax(m2[0], m2[1]);
+// and `Plain`)"). Then every value the filter computed is exact. `m` is max|coordinate| (the
+// filter's box has it: box_magnitudes).
+inline bool on_grid(const double* c, double m) {
   if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
   std::uint64_t bits;
   std::memcpy(&bits, &m, sizeof bits);
@@ -181,25 +206,33 @@ inline bool on_grid(const double* c) {
   double big;
   std::memcpy(&big, &bits, sizeof big);
   const Double2 big2 = {big, big};
-  Long2 grid = (v[0] + big2) - big2 == v[0];
-  for (int i = 1; i < 9; ++i) grid &= (v[i] + big2) - big2 == v[i];
+  Long2 grid = {-1, -1};
+  for (int i = 0; i < 9; ++i) {  // two coordinates at a time, read once
+    Double2 v;
+    std::memcpy(&v, c + 2 * i, sizeof v);
+    grid &= (v + big2) - big2 == v;
+  }
   return (grid[0] & grid[1]) != 0;
 }
 
 // The pair's grid test and its shared integer conversion, each evaluated at most once per pair
 // and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes).
+// The largest |coordinate| per axis comes from the filter's box (finite input: exact).
 struct LazyGrid {
-  LazyGrid(const double* pair, int grid) : c(pair), state(grid) {}  // x left unset until needed
+  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) {  // x unset until needed
+    box_magnitudes(box, mag);
+  }
   const double* c;
   int state;
   int ints = -1;
+  double mag[3];
   intexact::PairInt61 x;
   bool on() {
-    if (state < 0) state = on_grid(c) ? 1 : 0;
+    if (state < 0) state = on_grid(c, dmax(mag[0], dmax(mag[1], mag[2]))) ? 1 : 0;
     return state != 0;
   }
   bool converted() {
-    if (ints < 0) ints = intexact::pair_to_int61(c, x) ? 1 : 0;
+    if (ints < 0) ints = intexact::pair_to_int61(c, mag, x) ? 1 : 0;
     return ints != 0;
   }
 };
@@ -209,15 +242,17 @@ struct LazyGrid {
 // value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
 // the grid the value is exact ("The grid case"); else the pair's shared integer conversion when
 // every axis fits ("Zeros off the grid"); else the per-call filters and the integer engine.
-// (The certain case inline, the rest out of line: most calls are certain.)
+// (The certain case and a grid already known inline, the rest out of line: most calls are one
+// of those.)
 [[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
-  if (g.on()) return sgn(v);
+  if (g.on()) return sgn(v);  // the first value within the bound tests the grid
   if (g.converted()) return intexact::det3_pair_sign(g.x, {a, b, a, cc, a, d});
   return Filtered::o3(g.c + 3 * a, g.c + 3 * b, g.c + 3 * cc, g.c + 3 * d);
 }
 [[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, int a, int b, int cc, int d) {
   if (v > bound) return 1;
   if (v < -bound) return -1;
+  if (g.state == 1) return sgn(v);  // on the grid, known: no call
   return sign_o3_within(v, g, a, b, cc, d);
 }
 
@@ -228,8 +263,9 @@ Relation crossing_known(const double* c, const int s1[3], const int s2[3], doubl
   int l1, f1, l2, f2;
   lone_vertex(s1, l1, f1);
   lone_vertex(s2, l2, f2);
-  int p1 = l1, q1 = (l1 + 1) % 3, r1 = (l1 + 2) % 3;  // point indices 0..5
-  int p2 = 3 + l2, q2 = 3 + (l2 + 1) % 3, r2 = 3 + (l2 + 2) % 3;
+  static constexpr int kSucc[4] = {1, 2, 0, 1};  // (l + 1) % 3 at l, (l + 2) % 3 at l + 1
+  int p1 = l1, q1 = kSucc[l1], r1 = kSucc[l1 + 1];  // point indices 0..5
+  int p2 = 3 + l2, q2 = 3 + kSucc[l2], r2 = 3 + kSucc[l2 + 1];
   if (f2 < 0) std::swap(q1, r1);  // flips π1 so that p2 is on its positive side
   if (f1 < 0) std::swap(q2, r2);  // flips π2 so that p1 is on its positive side
   P P1 = c + 3 * p1, Q1 = c + 3 * q1, R1 = c + 3 * r1, P2 = c + 3 * p2, Q2 = c + 3 * q2, R2 = c + 3 * r2;
@@ -252,15 +288,15 @@ Relation crossing_known(const double* c, const int s1[3], const int s2[3], doubl
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
-  if (!finite18(c)) return solve<kRelation>(pair, route);  // declines
-  if (const unsigned bits = shared_vertices(c); bits != 0u) {
+  if (!finite_after_filter(c, ps)) return solve<kRelation>(pair, route);  // declines
+  if (const unsigned bits = shared_vertices<!kRelation>(c, shared_candidates(ps.open)); bits != 0u) {
     const Relation rel = kRelation ? shared_relation(bits, ps) : Relation::touch_point;  // a common point
     if (rel != Relation::unsupported) {
       if (route) *route = Route::shared;
       return answer_with(rel);
     }
   }
-  LazyGrid g{c, grid ? 1 : -1};
+  LazyGrid g{c, ps.box, grid ? 1 : -1};
   const double b = ps.bound;
   int known[6];
   for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);

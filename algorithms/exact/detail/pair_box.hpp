@@ -15,32 +15,8 @@ using Double2 = double __attribute__((vector_size(16)));
 // Two 64-bit integers in one register: the lane masks of Double2 comparisons (all bits set = true).
 using Long2 = long long __attribute__((vector_size(16)));
 
-// The kernel's B for one pair (pair_bound3's value), +inf unless every extent is at most kMax3.
-// Minima and maxima by `<` / `>` (an unordered comparison keeps the running value): an infinite
-// coordinate leaves its axis' minimum at -inf or maximum at +inf, or both NaN (a NaN first
-// coordinate), so the extent is +inf or NaN and B = +inf; a NaN coordinate met later is skipped,
-// but makes every value it enters NaN. Either way no comparison with B below is true.
-inline double one_pair_bound(const double* c) {
-  Double2 lo, hi;
-  std::memcpy(&lo, c, sizeof lo);
-  hi = lo;
-  double lo_z = c[2], hi_z = c[2];
-  for (int v = 1; v < 6; ++v) {
-    Double2 p;
-    std::memcpy(&p, c + 3 * v, sizeof p);
-    lo = p < lo ? p : lo;
-    hi = p > hi ? p : hi;
-    lo_z = c[3 * v + 2] < lo_z ? c[3 * v + 2] : lo_z;
-    hi_z = c[3 * v + 2] > hi_z ? c[3 * v + 2] : hi_z;
-  }
-  const Double2 e = hi - lo;
-  const double ex = e[0], ey = e[1], ez = hi_z - lo_z;
-  if (!(ex <= bound::kMax3 && ey <= bound::kMax3 && ez <= bound::kMax3)) return __builtin_inf();
-  return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
-}
-
 // The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
-// and maxima by `<` / `>`, as one_pair_bound).
+// and maxima by `<` / `>`: an unordered comparison keeps the running value).
 struct Box {
   Double2 lo, hi;
   double lo_z, hi_z;
@@ -61,15 +37,29 @@ inline Box box_of(const double* t) {
   return b;
 }
 
-// The pair's bound from its two boxes: one_pair_bound's value (the union's extents), +inf unless
-// every extent is at most kMax3.
-inline double bound_of_boxes(const Box& a, const Box& b) {
-  const Double2 lo = b.lo < a.lo ? b.lo : a.lo, hi = b.hi > a.hi ? b.hi : a.hi;
-  const Double2 e = hi - lo;
-  const double ex = e[0], ey = e[1];
-  const double ez = (b.hi_z > a.hi_z ? b.hi_z : a.hi_z) - (b.lo_z < a.lo_z ? b.lo_z : a.lo_z);
+// The box of both: minima and maxima by `<` / `>` (an unordered comparison keeps a's value).
+inline Box union_of(const Box& a, const Box& b) {
+  return {b.lo < a.lo ? b.lo : a.lo, b.hi > a.hi ? b.hi : a.hi, b.lo_z < a.lo_z ? b.lo_z : a.lo_z,
+          b.hi_z > a.hi_z ? b.hi_z : a.hi_z};
+}
+
+// The kernel's B for one pair (pair_bound3's value) from the box of its six points, +inf unless
+// every extent is at most kMax3. An infinite coordinate leaves its axis' minimum at -inf or
+// maximum at +inf (a NaN is skipped, or leaves NaN), so the extent is +inf or NaN and B = +inf,
+// unless a NaN was skipped; a NaN makes every value it enters NaN. Either way no comparison with
+// B below is true (algorithms/exact/README.md, "One pair per call").
+inline double bound_of_box(const Box& u) {
+  const Double2 e = u.hi - u.lo;
+  const double ex = e[0], ey = e[1], ez = u.hi_z - u.lo_z;
   if (!(ex <= bound::kMax3 && ey <= bound::kMax3 && ez <= bound::kMax3)) return __builtin_inf();
   return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
+}
+
+// The largest |coordinate| per axis of a box of finite coordinates: max(hi, -lo), exact.
+inline void box_magnitudes(const Box& u, double (&m)[3]) {
+  const Double2 a = -u.lo, h = u.hi;
+  const Double2 x = a > h ? a : h;
+  m[0] = x[0], m[1] = x[1], m[2] = dmax(-u.lo_z, u.hi_z);
 }
 
 // The boxes are disjoint along some axis (comparisons only, hence exact for finite coordinates).

@@ -775,6 +775,124 @@ TEST(OnePair, ExactSignsAfterTheFilterAtTheirEdges) {
   expect_all_paths_agree(moved, "exact signs at their edges");
 }
 
+TEST(OnePair, NonFiniteInputIsDeclinedAfterTheFilter) {
+  // `finish` reads finiteness from the filter (a finite bound, no NaN value) before it looks at
+  // the coordinates: one bad coordinate, and a NaN first on an axis with an infinity after it
+  // (the boxes skip the infinity, so the bound stays finite: only the NaN values tell)
+  const TrianglePair bases[] = {
+      {kFloor, tri({2, 2, 0}, {2, 2, 1}, {3, 2, -1})},  // a vertex on the hypotenuse
+      {kFloor, tri({1, 1, 0}, {1, 1, 1}, {3, 5, 2})},   // a vertex in T1
+      {kFloor, tri({0, 0, 0}, {-1, 0, 1}, {0, -1, 1})}, // a shared vertex
+      {kFloor, tri({1, 0, 0}, {3, 0, 0}, {1, 2, 0})},   // coplanar
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<TrianglePair> bad, all(std::begin(bases), std::end(bases));
+  GenRng r(37);  // random coordinates: an infinity then gives infinite values rather than NaN
+  for (int n = 0; n < 20; ++n) all.push_back(random_pair(r));
+  for (const TrianglePair& base : all)
+    for (int k = 0; k < 18; ++k) {
+      const auto at = [](TrianglePair& p, int i) -> double& { return (i < 9 ? p.t1[i / 3] : p.t2[(i - 9) / 3])[i % 3]; };
+      for (double v : {std::nan(""), inf, -inf}) {
+        TrianglePair p = base;
+        at(p, k) = v;
+        bad.push_back(p);
+      }
+      for (int later = k + 3; later < 18; later += 3)  // the same axis, a later vertex
+        for (double v : {inf, -inf}) {
+          TrianglePair p = base;
+          at(p, k) = std::nan("");
+          at(p, later) = v;
+          bad.push_back(p);
+        }
+    }
+  for (const TrianglePair& p : bad) {
+    ASSERT_EQ(ex::overlap(p), Overlap::unsupported);
+    ASSERT_EQ(ex::relation(p).relation, Relation::unsupported);
+  }
+  for (const auto& [isa, out, rel] : answers_on_every_isa(bad))
+    for (std::size_t i = 0; i < bad.size(); ++i) {
+      ASSERT_EQ(out[i], Overlap::unsupported) << i << " " << ex::to_string(isa);
+      ASSERT_EQ(rel[i].relation, Relation::unsupported) << i << " " << ex::to_string(isa);
+    }
+}
+
+TEST(OnePair, EverySharedVertexIsACandidate) {
+  // T1's vertex i equal to T2's vertex j, for each of the 9 (i, j), at the overlap level through
+  // the scalar pass (the one-pair filter, then `finish`): every pair by the shared-vertex
+  // shortcut, so the candidates from the filter's values must include (i, j)
+  GenRng r(31);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      std::vector<TrianglePair> pairs;
+      for (int n = 0; n < 300; ++n) {
+        TrianglePair p = n % 2 ? small_int_pair(r, 6) : random_pair(r);
+        p.t2[j] = p.t1[i];
+        pairs.push_back(p);
+      }
+      std::vector<Overlap> out(pairs.size());
+      ex::reset_stats();
+      ex::overlap_batch_with(ex::Isa::scalar, pairs.data(), pairs.size(), out.data());
+      EXPECT_EQ(ex::stats().shared, pairs.size()) << i << " " << j;
+      for (const Overlap o : out) ASSERT_EQ(o, Overlap::yes);
+      // a shared edge (vertex i and the next one) of random triangles, whose third vertices are
+      // certainly off the other plane: the relation level's shortcut (`touch_segment`)
+      std::vector<TrianglePair> edges;
+      for (std::size_t n = 0; n < pairs.size(); n += 2) {
+        TrianglePair p = pairs[n];
+        p.t2[(j + 1) % 3] = p.t1[(i + 1) % 3];
+        edges.push_back(p);
+      }
+      std::vector<RelationAnswer> rel(edges.size());
+      ex::reset_stats();
+      ex::relation_batch_with(ex::Isa::scalar, edges.data(), edges.size(), rel.data());
+      EXPECT_EQ(ex::stats().shared, edges.size()) << i << " " << j;
+      for (const RelationAnswer& a : rel) ASSERT_EQ(a.relation, Relation::touch_segment);
+    }
+}
+
+TEST(OnePair, LoneVertexTableMeetsItsDefinition) {
+  // every sign triple that is neither all zero nor one-sided: f·s[l] >= 0, the other two <= 0,
+  // and f·s[l] > 0 or both others < 0 (classify.hpp's canonical order)
+  for (int a = -1; a <= 1; ++a)
+    for (int b = -1; b <= 1; ++b)
+      for (int c = -1; c <= 1; ++c) {
+        const int s[3] = {a, b, c};
+        if ((a == b && b == c) && a != 0) continue;  // one-sided
+        if (a == 0 && b == 0 && c == 0) continue;
+        int l = -1, f = 0;
+        ex::detail::lone_vertex(s, l, f);
+        ASSERT_TRUE(l >= 0 && l < 3 && (f == 1 || f == -1)) << a << b << c;
+        const int p = f * s[l], q = f * s[(l + 1) % 3], t = f * s[(l + 2) % 3];
+        EXPECT_TRUE(p >= 0 && q <= 0 && t <= 0 && (p > 0 || (q < 0 && t < 0))) << a << " " << b << " " << c;
+      }
+}
+
+TEST(OnePair, BoxMagnitudesAreTheLargestCoordinates) {
+  // the grid test and the shared conversion take each axis' largest |coordinate| from the
+  // filter's box: it must be the one over the six points, whichever sign holds it, and the
+  // conversion from it the same as the conversion computing its own
+  GenRng r(41);
+  for (int n = 0; n < 3000; ++n) {
+    TrianglePair p = n % 3 == 0 ? random_pair(r) : scaled(small_int_pair(r, 9), static_cast<int>(r.integer(-60, 60)));
+    if (n % 2) p = translated(p, V(-std::ldexp(1.0, 20), 0.0, std::ldexp(1.0, 18)));  // a negative axis
+    double c[18];
+    coords(p, c);
+    double mag[3];
+    ex::detail::box_magnitudes(ex::detail::union_of(ex::detail::box_of(c), ex::detail::box_of(c + 9)), mag);
+    for (int k = 0; k < 3; ++k) {
+      double m = 0.0;
+      for (int v = 0; v < 6; ++v) m = std::max(m, std::fabs(c[3 * v + k]));
+      ASSERT_EQ(mag[k], m) << n << " axis " << k;
+    }
+    ex::intexact::PairInt61 own, given;
+    const bool ok = ex::intexact::pair_to_int61(c, own);
+    ASSERT_EQ(ex::intexact::pair_to_int61(c, mag, given), ok) << n;
+    if (ok)
+      for (int k = 0; k < 3; ++k)
+        for (int v = 0; v < 6; ++v) ASSERT_EQ(given.x[k][v], own.x[k][v]) << n;
+  }
+}
+
 TEST(ZerosOffTheGrid, OnePairPathAgreesWithTheOracle) {
   // the same pairs and their images with a touching configuration put into the triangles: each
   // one-pair and batch answer against the oracle; the shared conversion must decide some signs
