@@ -170,13 +170,13 @@ bool coplanar_known(const double* c, Grid& g, Relation& out) {
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
   const Projected p = project(Tri{{c, c + 3, c + 6}}, Tri{{c + 9, c + 12, c + 15}}, i, j);
   const CoplanarValues cv = coplanar_values(p);
-  if (g.state == 1) return coplanar_exact<kRelation>(c, cv, out);  // the 3-D grid: every o2 exact
+  // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
+  if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, cv, out);
   const double t = projected_bound(p);
   if (const int d = coplanar_certain(cv, t); d >= 0) {
     out = d ? Relation::coplanar_overlap : Relation::coplanar_disjoint;
     return true;
   }
-  if (on_grid2(p)) return coplanar_exact<kRelation>(c, cv, out);
   return coplanar_by_signs<kRelation>(c, g, cv, t, i, j, out);
 }
 
