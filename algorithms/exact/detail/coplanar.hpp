@@ -8,7 +8,7 @@
 //               orientations there (T1's n_k, T2's) must be exactly non-zero, which proves both
 //               proper and the pair coplanar; otherwise the caller classifies (degenerate input);
 //   values      the 18 edge values (each vertex against each edge line of the other triangle)
-//               and both orientations, two at a time (classify.hpp's `coplanar_values`);
+//               and both orientations, two at a time (projected.hpp's `coplanar_values`);
 //   decision    where every value is exact (the pair on the 3-D grid, or its projection on the
 //               2-D grid): no edge line with its three values negative means a meet; elsewhere
 //               an edge line with its three values certainly negative (beyond the det2 bound of
@@ -168,7 +168,8 @@ bool coplanar_known(const double* c, Grid& g, Relation& out) {
   const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
   const int k = (ax >= ay) & (ax >= az) ? 0 : (ay >= az ? 1 : 2);
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
-  const Projected p = project(Tri{{c, c + 3, c + 6}}, Tri{{c + 9, c + 12, c + 15}}, i, j);
+  const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
+  const Projected p = project(t1, t2, i, j);
   const CoplanarValues cv = coplanar_values(p);
   // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
   if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, cv, out);
