@@ -24,6 +24,7 @@
 #pragma once
 
 #include "algorithms/exact/detail/predicates.hpp"
+#include "algorithms/exact/detail/projected.hpp"
 #include "tritri/answers.hpp"
 
 #include <array>
@@ -266,27 +267,17 @@ template <class Pr, bool kRelation>
 Relation coplanar(const Tri& a, const Tri& b, const int na[3], const int nb[3]) {
   const Projection pr = projection_for(na);
   const int ob = nb[(pr.i + 2) % 3];  // b's orientation in the same projection (non-zero)
-  // One bound for all 18 orientations: the extents of the six projected points.
-  double lo_i = a.v[0][pr.i], hi_i = lo_i, lo_j = a.v[0][pr.j], hi_j = lo_j;
-  for (const Tri* t : {&a, &b})
-    for (int v = 0; v < 3; ++v) {
-      lo_i = std::min(lo_i, t->v[v][pr.i]), hi_i = std::max(hi_i, t->v[v][pr.i]);
-      lo_j = std::min(lo_j, t->v[v][pr.j]), hi_j = std::max(hi_j, t->v[v][pr.j]);
-    }
-  const double bound2 = det2_bound(hi_i - lo_i, hi_j - lo_j);
+  const Projected p = project(a.v, b.v, pr.i, pr.j);
+  const double bound2 = projected_bound(p);  // one bound for all 18 orientations
+  const CoplanarValues cv = coplanar_values(p);
   CoplanarSigns o;
   for (int side = 0; side < 2; ++side) {
     const Tri& t = side == 0 ? a : b;
     const Tri& u = side == 0 ? b : a;
     const int orient = side == 0 ? pr.orientation : ob;
-    for (int e = 0; e < 3; ++e) {
-      P s0 = t.v[e], s1 = t.v[(e + 1) % 3];
-      const double ei = s1[pr.i] - s0[pr.i], ej = s1[pr.j] - s0[pr.j];
-      for (int v = 0; v < 3; ++v) {
-        const double value = ei * (u.v[v][pr.j] - s0[pr.j]) - ej * (u.v[v][pr.i] - s0[pr.i]);
-        o[side][e][v] = Pr::o2_with(value, bound2, s0, s1, u.v[v], pr.i, pr.j) * orient;
-      }
-    }
+    for (int e = 0; e < 3; ++e)
+      for (int v = 0; v < 3; ++v)
+        o[side][e][v] = Pr::o2_with(cv.edge[e][v][side], bound2, t.v[e], t.v[(e + 1) % 3], u.v[v], pr.i, pr.j) * orient;
   }
   return coplanar_from_signs<kRelation>(a, b, o);
 }

@@ -1,78 +1,184 @@
 // Coplanar proper pairs in the one-pair path (one_pair.hpp's `finish`, which the batch's scalar
-// pass runs too): T1's three exact signs against π2 are zero, and the pair is decided in 2-D from
-// the filter's values, without the classification's second evaluation of both normals and its 18
-// per-call filters.
+// pass runs too): T1's three exact signs against π2 are zero, and the pair is decided in 2-D
+// without the classification's second evaluation of both normals and its 18 per-call filters.
 //
+//   flat        the six points share one coordinate exactly: T1's signs against π2 are zero
+//               without arithmetic (and the filter's values are then exact zeros);
 //   projection  drop the axis k of T1's largest computed normal component; both triangles'
 //               orientations there (T1's n_k, T2's) must be exactly non-zero, which proves both
 //               proper and the pair coplanar; otherwise the caller classifies (degenerate input);
-//   18 values   each vertex against each edge line of the other triangle, in det2_value's shape,
-//               all under one det2 bound from the extents of the six projected points; a value
-//               within it gets its exact sign from plain double on the grid, else from the
-//               pair's shared integer conversion (128-bit), else the per-call dynamic bound and
-//               the integer engine;
-//   decision    classify.hpp's `coplanar_from_signs`.
+//   values      the 18 edge values (each vertex against each edge line of the other triangle)
+//               and both orientations, two at a time (projected.hpp's `coplanar_values`);
+//   decision    where every value is exact (the pair on the 3-D grid, or its projection on the
+//               2-D grid): no edge line with its three values negative means a meet; elsewhere
+//               an edge line with its three values certainly negative (beyond the det2 bound of
+//               the projected extents) separates, and every edge line with a value certainly
+//               positive means the interiors meet; only what is left takes each value's exact
+//               sign (the pair's shared integer conversion, else the per-call dynamic bound and
+//               the integer engine) and classify.hpp's `coplanar_from_signs`.
 // algorithms/exact/README.md, "Coplanar pairs, one pair per call", proves it.
 #pragma once
 
 #include "algorithms/exact/detail/classify.hpp"
 
+#include <cstdint>
+#include <cstring>
+
 namespace tritri::exact::detail {
 
-// The pair (18 coordinates at c, finite) when T1's exact signs against π2 are all zero: true and
-// `out` set when both triangles are proper (then they are coplanar), false when a triangle's
-// orientation in the chosen projection is zero (a degenerate triangle, or a normal whose largest
-// computed component is exactly zero: the caller classifies). `Grid` is one_pair.hpp's LazyGrid:
-// on(), the grid test; converted() and x, the pair's shared integer conversion.
-template <bool kRelation, class Grid>
-bool coplanar_known(const double* c, Grid& g, Relation& out) {
-  const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
-  const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
-  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  const double ax = std::fabs(nx), ay = std::fabs(ny), az = std::fabs(nz);
-  const int k = (ax >= ay) & (ax >= az) ? 0 : (ay >= az ? 1 : 2);
-  const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
-  double pi[6], pj[6];
-  for (int v = 0; v < 6; ++v) pi[v] = c[3 * v + i], pj[v] = c[3 * v + j];
-  double lo_i = pi[0], hi_i = pi[0], lo_j = pj[0], hi_j = pj[0];
-  for (int v = 1; v < 6; ++v) {
-    lo_i = pi[v] < lo_i ? pi[v] : lo_i, hi_i = pi[v] > hi_i ? pi[v] : hi_i;
-    lo_j = pj[v] < lo_j ? pj[v] : lo_j, hi_j = pj[v] > hi_j ? pj[v] : hi_j;
+// The lanes of v[0..n) are all multiples of 2^q with |x| < 2^(q + bits), q = e - (bits - 1) for
+// 2^e <= max|x| = m < 2^(e+1), and m lies in [lo, hi): fl(fl(x + C) - C) = x with C = 1.5·2^(q+52),
+// built from m's exponent bits (algorithms/exact/README.md, "The grid case", "The 2-D grid").
+// Finite input; hi at most 2^(1023 - 53 + bits) so that C is finite.
+inline bool on_grid_of(const Double2* v, int n, double lo, double hi, int bits) {
+  const Long2 no_sign = {0x7fffffffffffffffll, 0x7fffffffffffffffll};
+  Double2 m2 = {0.0, 0.0};
+  for (int k = 0; k < n; ++k) {
+    const Double2 a = reinterpret_cast<Double2>(reinterpret_cast<Long2>(v[k]) & no_sign);  // |x|
+    m2 = a > m2 ? a : m2;
   }
-  // on the grid every value below is exact: threshold 0, and a value within it is exactly 0
-  const bool grid = g.on();
-  const double t = grid ? 0.0 : det2_bound(hi_i - lo_i, hi_j - lo_j);
-  // the exact sign of o2(a, b, v) given its value in det2_value's shape
+  const double m = dmax(m2[0], m2[1]);
+  if (!(m >= lo && m < hi)) return false;
+  std::uint64_t b;
+  std::memcpy(&b, &m, sizeof b);
+  b = ((b & 0x7ff0000000000000ull) + (static_cast<std::uint64_t>(53 - bits) << 52)) | (1ull << 51);
+  double big;
+  std::memcpy(&big, &b, sizeof big);
+  const Double2 c = {big, big};
+  Long2 all = (v[0] + c) - c == v[0];
+  for (int k = 1; k < n; ++k) all &= (v[k] + c) - c == v[k];
+  return (all[0] & all[1]) != 0;
+}
+
+// The 2-D grid test on the 12 projected coordinates (pass 2's grid2_lanes for one pair): m in
+// [2^-500, 2^500), 25 bits; then every o2 of them is exact in double.
+inline bool on_grid2(const Projected& p) {
+  const Double2 v[6] = {p.i[0], p.i[1], p.i[2], p.j[0], p.j[1], p.j[2]};
+  return on_grid_of(v, 6, 0x1p-500, 0x1p500, 25);
+}
+
+// The six points share one coordinate exactly (pass 2's flat_lanes for one pair; finite input).
+inline bool flat_pair(const double* c) {
+  Double2 xy0, xy;
+  std::memcpy(&xy0, c, sizeof xy0);
+  Long2 same = {-1, -1};
+  bool same_z = true;
+  for (int v = 1; v < 6; ++v) {
+    std::memcpy(&xy, c + 3 * v, sizeof xy);
+    same &= xy == xy0;
+    same_z &= c[3 * v + 2] == c[2];
+  }
+  return ((same[0] | same[1]) != 0) | same_z;
+}
+
+// Each value with the sign of its triangle's orientation folded in (inside positive): exact, as a
+// change of sign. The orientations must be non-zero.
+inline void inside_positive(const CoplanarValues& cv, Double2 (&n)[3][3]) {
+  const Long2 sign = reinterpret_cast<Long2>(cv.orient) & Long2{INT64_MIN, INT64_MIN};
+  for (int e = 0; e < 3; ++e)
+    for (int w = 0; w < 3; ++w) n[e][w] = reinterpret_cast<Double2>(reinterpret_cast<Long2>(cv.edge[e][w]) ^ sign);
+}
+
+// Per edge line (lane 0 T1's edge e, lane 1 T2's), the largest of its three inside-positive values.
+inline void edge_maxima(const Double2 (&n)[3][3], Double2 (&m)[3]) {
+  for (int e = 0; e < 3; ++e) {
+    const Double2 a = n[e][0] > n[e][1] ? n[e][0] : n[e][1];
+    m[e] = a > n[e][2] ? a : n[e][2];
+  }
+}
+
+// Every value exact: false when an orientation is zero (the caller classifies); else the
+// relation by the separating-axis theorem (step 3 of "The decisions").
+template <bool kRelation>
+bool coplanar_exact(const double* c, const CoplanarValues& cv, Relation& out) {
+  if ((cv.orient[0] == 0.0) | (cv.orient[1] == 0.0)) return false;
+  Double2 n[3][3], m[3];
+  inside_positive(cv, n);
+  edge_maxima(n, m);
+  const Long2 strict = (m[0] < 0.0) | (m[1] < 0.0) | (m[2] < 0.0);
+  if ((strict[0] | strict[1]) != 0) {
+    out = Relation::coplanar_disjoint;
+    return true;
+  }
+  const Long2 inside = (m[0] > 0.0) & (m[1] > 0.0) & (m[2] > 0.0);
+  if (!kRelation || (inside[0] & inside[1]) != 0) {  // no edge line separates, not even weakly
+    out = Relation::coplanar_overlap;
+    return true;
+  }
+  CoplanarSigns o;
+  for (int side = 0; side < 2; ++side)
+    for (int e = 0; e < 3; ++e)
+      for (int w = 0; w < 3; ++w) o[side][e][w] = sgn(n[e][w][side]);
+  out = coplanar_from_signs<kRelation>(Tri{{c, c + 3, c + 6}}, Tri{{c + 9, c + 12, c + 15}}, o);
+  return true;
+}
+
+// Against a bound t valid for every value: 0 an edge line certainly separates strictly, 1 every
+// edge line has a value certainly inside (the interiors meet), -1 undecided (an orientation or a
+// deciding value within t).
+inline int coplanar_certain(const CoplanarValues& cv, double t) {
+  const Long2 proper = (cv.orient > t) | (cv.orient < -t);
+  if ((proper[0] & proper[1]) == 0) return -1;
+  Double2 n[3][3], m[3];
+  inside_positive(cv, n);
+  edge_maxima(n, m);
+  const Long2 strict = (m[0] < -t) | (m[1] < -t) | (m[2] < -t);
+  if ((strict[0] | strict[1]) != 0) return 0;
+  const Long2 inside = (m[0] > t) & (m[1] > t) & (m[2] > t);
+  return (inside[0] & inside[1]) != 0 ? 1 : -1;
+}
+
+// Each value's exact sign (beyond t its own; within it the pair's shared conversion, else the
+// per-call dynamic bound and the integer engine), then coplanar_from_signs. False when an
+// orientation is exactly zero. `Grid` is one_pair.hpp's LazyGrid (converted() and x).
+template <bool kRelation, class Grid>
+bool coplanar_by_signs(const double* c, Grid& g, const CoplanarValues& cv, double t, int i, int j, Relation& out) {
   const auto sign = [&](double value, int a, int b, int v) {
     if (value > t) return 1;
     if (value < -t) return -1;
-    if (grid) return 0;
     if (g.converted()) return intexact::det2_pair_sign(g.x, i, j, a, b, v);
     return Filtered::dynamic2(c + 3 * a, c + 3 * b, c + 3 * v, i, j);
   };
-  const double n1 = k == 0 ? nx : (k == 1 ? ny : nz);
-  const double n2 = (pi[4] - pi[3]) * (pj[5] - pj[3]) - (pj[4] - pj[3]) * (pi[5] - pi[3]);
-  const int o1 = sign(n1, 0, 1, 2);
+  const int o1 = sign(cv.orient[0], 0, 1, 2);
   if (o1 == 0) return false;
-  const int o2 = sign(n2, 3, 4, 5);
+  const int o2 = sign(cv.orient[1], 3, 4, 5);
   if (o2 == 0) return false;
   CoplanarSigns o;
   for (int side = 0; side < 2; ++side) {
     const int own = 3 * side, other = 3 - own;  // first point of the edges' triangle, of the other
     const int orient = side == 0 ? o1 : o2;
-    for (int e = 0; e < 3; ++e) {
-      const int a = own + e, b = own + (e == 2 ? 0 : e + 1);
-      const double ei = pi[b] - pi[a], ej = pj[b] - pj[a];
-      for (int v = 0; v < 3; ++v) {
-        const int w = other + v;
-        const double value = ei * (pj[w] - pj[a]) - ej * (pi[w] - pi[a]);
-        o[side][e][v] = sign(value, a, b, w) * orient;
-      }
-    }
+    for (int e = 0; e < 3; ++e)
+      for (int w = 0; w < 3; ++w)
+        o[side][e][w] = sign(cv.edge[e][w][side], own + e, own + (e == 2 ? 0 : e + 1), other + w) * orient;
   }
-  const Tri t1{{c, c + 3, c + 6}}, t2{{c + 9, c + 12, c + 15}};
-  out = coplanar_from_signs<kRelation>(t1, t2, o);
+  out = coplanar_from_signs<kRelation>(Tri{{c, c + 3, c + 6}}, Tri{{c + 9, c + 12, c + 15}}, o);
   return true;
+}
+
+// The pair (18 coordinates at c, finite) when T1's exact signs against π2 are all zero: true and
+// `out` set when both triangles are proper (then they are coplanar), false when a triangle's
+// orientation in the chosen projection is zero (a degenerate triangle, or a normal whose largest
+// computed component is exactly zero: the caller classifies). `Grid` is one_pair.hpp's LazyGrid:
+// state 1 when the pair is known to be on the 3-D grid; converted() and x, the pair's shared
+// integer conversion.
+template <bool kRelation, class Grid>
+bool coplanar_known(const double* c, Grid& g, Relation& out) {
+  const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
+  const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
+  const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
+  const int k = (ax >= ay) & (ax >= az) ? 0 : (ay >= az ? 1 : 2);
+  const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
+  const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
+  const Projected p = project(t1, t2, i, j);
+  const CoplanarValues cv = coplanar_values(p);
+  // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
+  if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, cv, out);
+  const double t = projected_bound(p);
+  if (const int d = coplanar_certain(cv, t); d >= 0) {
+    out = d ? Relation::coplanar_overlap : Relation::coplanar_disjoint;
+    return true;
+  }
+  return coplanar_by_signs<kRelation>(c, g, cv, t, i, j, out);
 }
 
 }  // namespace tritri::exact::detail

@@ -298,13 +298,14 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   }
   LazyGrid g{c, ps.box, grid ? 1 : -1};
   const double b = ps.bound;
+  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
+  // (coplanar.hpp); degenerate input goes on to the classification. Six points on one
+  // axis-parallel plane prove the zeros without arithmetic (their values are computed zeros).
+  const bool flat = (ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c);
   int known[6];
-  for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
+  for (int k = 0; k < 3; ++k) known[k] = flat ? 0 : sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
-  // T1 in π2 off the grid: coplanar when both are proper, decided in 2-D (coplanar.hpp);
-  // degenerate input goes on to the classification. On the grid (every zero above asked for the
-  // grid test, so its state is known) the classification's plain-double branch is cheaper.
-  if (Relation rel; !any1 && g.state != 1 && coplanar_known<kRelation>(c, g, rel)) {
+  if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
     if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
     return answer_with(rel);
   }

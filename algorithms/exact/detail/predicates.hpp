@@ -59,7 +59,9 @@ struct Det3 {
   double perm;            // the permanent: sum of |u_k|·(|v_i w_j| + |v_j w_i|)
 };
 
-inline Det3 det3_eval(P a0, P a1, P b0, P b1, P c0, P c1) {
+// Always inlined: most callers read only `value`, and the rest is then dead code (out of line,
+// every call would compute the permanent and the maxima too).
+[[gnu::always_inline]] inline Det3 det3_eval(P a0, P a1, P b0, P b1, P c0, P c1) {
   const double ux = a1[0] - a0[0], uy = a1[1] - a0[1], uz = a1[2] - a0[2];
   const double vx = b1[0] - b0[0], vy = b1[1] - b0[1], vz = b1[2] - b0[2];
   const double wx = c1[0] - c0[0], wy = c1[1] - c0[1], wz = c1[2] - c0[2];

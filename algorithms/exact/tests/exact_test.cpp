@@ -11,6 +11,7 @@
 #include <gmp.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -1168,4 +1169,107 @@ TEST(CoplanarPass2, TheTwoDimensionalGridIsExactAndTaken) {
     for (const auto& v : all_orders(t)) edge.push_back(v);
   }
   expect_all_paths_agree(edge, "one unit outside at 26 bits");
+}
+
+namespace {
+
+// The pair with its axes rotated: coordinate k moved to (k + shift) mod 3 (relations unchanged).
+TrianglePair rotated_axes(const TrianglePair& p, int shift) {
+  TrianglePair out = p;
+  for (Triangle* t : {&out.t1, &out.t2})
+    for (auto& v : t->v) {
+      const V w = v;
+      for (int k = 0; k < 3; ++k) v[(k + shift) % 3] = w[k];
+    }
+  return out;
+}
+
+// Every vertex and argument order on every axis.
+std::vector<TrianglePair> every_order_and_axis(const TrianglePair& p) {
+  std::vector<TrianglePair> out;
+  for (int shift = 0; shift < 3; ++shift)
+    for (const auto& v : all_orders(rotated_axes(p, shift))) out.push_back(v);
+  return out;
+}
+
+}  // namespace
+
+// The one-pair path's flat step (coplanar.hpp, flat_pair): six points on one axis-parallel plane
+// need no plane sign. Traps for a flat test that skips a point or an axis: T2 of size s = 2^-560
+// (its normal's products underflow, so T1's plane values are computed as zeros, as a flat pair's
+// are) near T1's corner at the origin, on z = 0 but for one vertex lifted by s, or flat with T1's
+// third vertex lifted by 1. Each pair is disjoint in 3-D (the lifted triangle meets z = 0 along
+// an edge that misses the other) while their projections on z = 0 overlap: the answer a flat
+// pair would get.
+TEST(CoplanarOnePair, FlatPairsAreDecidedIn2DAndOnlyThey) {
+  const double s = std::ldexp(1.0, -560);
+  const TrianglePair lifted_t2{kFloor, tri({s, -s, 0}, {3 * s, -s, 0}, {2 * s, s, s})};
+  const TrianglePair lifted_t1{tri({0, 0, 0}, {4, 0, 0}, {0, 4, 1}), tri({s, s, 0}, {2 * s, s, 0}, {s, 2 * s, 0})};
+  std::vector<TrianglePair> traps;
+  for (const TrianglePair& p : {lifted_t2, lifted_t1}) {
+    ASSERT_FALSE(oracle_label(p).overlap);
+    for (const auto& v : every_order_and_axis(p)) traps.push_back(v);
+  }
+  expect_all_paths_agree(traps, "a lifted vertex whose plane values underflow");
+  // flat pairs at 2^-20 resolution (off the 3-D grid, on the 2-D one), touching or not: decided
+  // in 2-D without a plane sign or an integer o2 in the one-pair path
+  GenRng r(33);
+  std::vector<TrianglePair> flat;
+  for (int i = 0; i < 512; ++i) {
+    auto pt = [&] { return V(std::ldexp(static_cast<double>(r.integer(-1 << 20, 1 << 20)), -18),
+                             std::ldexp(static_cast<double>(r.integer(-1 << 20, 1 << 20)), -18), 0.375); };
+    TrianglePair p{Triangle{{pt(), pt(), pt()}}, Triangle{{pt(), pt(), pt()}}};
+    if (i % 2) p.t2[0] = (p.t1[0] + p.t1[1]) * 0.5;  // on T1's edge: a zero edge value
+    flat.push_back(rotated_axes(p, i % 3));
+  }
+  ex::intexact::counts() = {};
+  for (const auto& p : flat) {
+    static_cast<void>(ex::overlap(p));
+    static_cast<void>(ex::relation(p));
+  }
+  EXPECT_EQ(ex::intexact::counts().pair3, 0u);
+  EXPECT_EQ(ex::intexact::counts().pair2 + ex::intexact::counts().fast2, 0u);
+  expect_all_paths_agree(flat, "flat at 2^-20");
+}
+
+// The second pass's box test (overlap level): apart boxes decide coplanar pairs off the grid in
+// lanes; boxes that only touch do not (a vertex of T1 on an edge of T2 at their common face, no
+// shared vertex, pending from pass 1 by its zero sign); non-finite apart pairs are declined.
+TEST(CoplanarPass2, ApartBoxesAreDecidedInLanes) {
+  GenRng r(34);
+  std::vector<TrianglePair> apart;  // coplanar, in general planes, with boxes apart along an axis
+  while (apart.size() < 4096) {
+    const auto f = random_frame(r);
+    const double dx = static_cast<double>(r.integer(9, 40)), dy = static_cast<double>(r.integer(-40, 40));
+    const TrianglePair p{Triangle{{in_frame(f, 0, 0), in_frame(f, 8, 0), in_frame(f, 0, 8)}},
+                         Triangle{{in_frame(f, dx, dy), in_frame(f, dx + 3, dy + 1), in_frame(f, dx + 1, dy + 5)}}};
+    bool separated = false;
+    for (int k = 0; k < 3; ++k) {
+      const auto lo = [&](const Triangle& t) { return std::min({t[0][k], t[1][k], t[2][k]}); };
+      const auto hi = [&](const Triangle& t) { return std::max({t[0][k], t[1][k], t[2][k]}); };
+      separated |= hi(p.t1) < lo(p.t2) || hi(p.t2) < lo(p.t1);
+    }
+    if (separated) apart.push_back(translated(scaled(p, -30), V(0.1, 0.3, 0.7)));  // off the 3-D grid
+  }
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    const ex::Stats st = run_overlap(isa, apart);
+    EXPECT_EQ(st.pending, apart.size()) << ex::to_string(isa) << ": coplanar, so pass 1 cannot decide";
+    EXPECT_LT(st.scalar, apart.size() / 50) << ex::to_string(isa) << ": only boxes that overlap go on";
+  }
+  expect_all_paths_agree(std::vector<TrianglePair>(apart.begin(), apart.begin() + 512), "apart boxes");
+  // touching boxes: T1's vertex (4, 0, 0) on T2's edge, T2 at x >= 4
+  const TrianglePair touch{kFloor, tri({4, -1, 1}, {4, 1, -1}, {6, 0, 0})};
+  ASSERT_TRUE(oracle_label(touch).overlap);
+  std::vector<TrianglePair> touching;
+  for (const auto& v : every_order_and_axis(touch)) {
+    touching.push_back(v);
+    touching.push_back(translated(scaled(v, -30), V(0.1, 0.3, 0.7)));
+  }
+  expect_all_paths_agree(touching, "boxes touching at a face");
+  std::vector<TrianglePair> bad(36, TrianglePair{kFloor, tri({10, 0, 0}, {14, 0, 0}, {10, 4, 0})});
+  for (std::size_t k = 0; k < bad.size(); ++k)
+    (k % 18 < 9 ? bad[k].t1 : bad[k].t2)[(k % 9) / 3][k % 3] = k < 18 ? std::nan("") : INFINITY;
+  for (const auto& [isa, out, rel] : answers_on_every_isa(bad))
+    for (std::size_t k = 0; k < bad.size(); ++k) EXPECT_EQ(out[k], Overlap::unsupported) << k << " " << ex::to_string(isa);
 }

@@ -1,0 +1,60 @@
+// A pair's six points in one projection (i, j), two at a time (SSE2 / NEON registers through
+// GCC's vector extension): the det2 bound of their extents and the 20 values of the coplanar
+// test, each evaluated as det2_value evaluates o2. The classification's coplanar branch
+// (classify.hpp) and the one-pair coplanar step (coplanar.hpp) share them; algorithms/exact/
+// README.md, "Coplanar pairs, one pair per call", says why the bound serves every value.
+#pragma once
+
+#include "algorithms/exact/detail/pair_box.hpp"
+#include "algorithms/exact/detail/predicates.hpp"
+
+#include <algorithm>
+
+namespace tritri::exact::detail {
+
+// The pair's six points in the projection (i, j), vertex v of both triangles in one register:
+// lane 0 T1's, lane 1 T2's (so that each triangle's edges meet the other's vertices lane by lane).
+struct Projected {
+  Double2 i[3], j[3];
+};
+inline Projected project(const P (&a)[3], const P (&b)[3], int i, int j) {
+  Projected p;
+  for (int v = 0; v < 3; ++v) p.i[v] = Double2{a[v][i], b[v][i]}, p.j[v] = Double2{a[v][j], b[v][j]};
+  return p;
+}
+
+// The det2 bound from the extents of the six projected points (algorithms/exact/README.md,
+// "det2", "Shared bounds"): valid for every o2 of them evaluated as det2_value evaluates it;
+// +inf beyond kMax2. Finite coordinates.
+inline double projected_bound(const Projected& p) {
+  Double2 lo_i = p.i[0], hi_i = p.i[0], lo_j = p.j[0], hi_j = p.j[0];
+  for (int v = 1; v < 3; ++v) {
+    lo_i = p.i[v] < lo_i ? p.i[v] : lo_i, hi_i = p.i[v] > hi_i ? p.i[v] : hi_i;
+    lo_j = p.j[v] < lo_j ? p.j[v] : lo_j, hi_j = p.j[v] > hi_j ? p.j[v] : hi_j;
+  }
+  const double ei = dmax(hi_i[0], hi_i[1]) - std::min(lo_i[0], lo_i[1]);
+  const double ej = dmax(hi_j[0], hi_j[1]) - std::min(lo_j[0], lo_j[1]);
+  return det2_bound(ei, ej);
+}
+
+// The orientations and the 18 edge values of a pair in one projection, each an o2 evaluated as
+// det2_value evaluates it (so that projected_bound serves all 20). Lane 0: T1's orientation and
+// T1's edges against T2's vertices; lane 1 the same with the triangles exchanged.
+struct CoplanarValues {
+  Double2 orient;      // o2(v0, v1, v2), v the lane's triangle
+  Double2 edge[3][3];  // [e][w]: o2(v_e, v_e+1, u_w), u the other triangle
+};
+inline CoplanarValues coplanar_values(const Projected& p) {
+  CoplanarValues out;
+  Double2 ui[3], uj[3];  // the other triangle's vertices: the lanes exchanged
+  for (int w = 0; w < 3; ++w) ui[w] = Double2{p.i[w][1], p.i[w][0]}, uj[w] = Double2{p.j[w][1], p.j[w][0]};
+  for (int e = 0; e < 3; ++e) {
+    const int f = e == 2 ? 0 : e + 1;
+    const Double2 ei = p.i[f] - p.i[e], ej = p.j[f] - p.j[e];
+    for (int w = 0; w < 3; ++w) out.edge[e][w] = ei * (uj[w] - p.j[e]) - ej * (ui[w] - p.i[e]);
+  }
+  out.orient = (p.i[1] - p.i[0]) * (p.j[2] - p.j[0]) - (p.j[1] - p.j[0]) * (p.i[2] - p.i[0]);
+  return out;
+}
+
+}  // namespace tritri::exact::detail
