@@ -807,6 +807,15 @@ ex::Stats run_overlap(ex::Isa isa, const std::vector<TrianglePair>& pairs) {
   ex::overlap_batch_with(isa, pairs.data(), pairs.size(), out.data());
   return ex::stats();
 }
+// How many of the pairs have their triangles' boxes apart (pass 1's box exit takes them).
+std::size_t boxes_apart(const std::vector<TrianglePair>& pairs) {
+  std::size_t n = 0;
+  for (const TrianglePair& p : pairs) {
+    const double* c = reinterpret_cast<const double*>(&p);
+    n += ex::detail::boxes_apart(ex::detail::box_of(c), ex::detail::box_of(c + 9)) ? 1u : 0u;
+  }
+  return n;
+}
 }  // namespace
 
 TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
@@ -830,13 +839,8 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
     // every pair undecided by pass 1 but those its box exit takes (boxes apart), fewer than
     // `most` left by pass 2
     const auto second_pass_takes = [&](const std::vector<TrianglePair>& pairs, std::uint64_t most, const char* why) {
-      std::uint64_t apart = 0;
-      for (const TrianglePair& p : pairs) {
-        const double* c = reinterpret_cast<const double*>(&p);
-        apart += ex::detail::boxes_apart(ex::detail::box_of(c), ex::detail::box_of(c + 9)) ? 1u : 0u;
-      }
       const ex::Stats st = run_overlap(isa, pairs);
-      EXPECT_EQ(st.pending, pairs.size() - apart);
+      EXPECT_EQ(st.pending, pairs.size() - boxes_apart(pairs));
       EXPECT_LT(st.scalar, most) << why;
     };
     second_pass_takes(coplanar, 4096u / 5, "the degenerate and touching ones only");
