@@ -926,6 +926,15 @@ ex::Stats run_overlap(ex::Isa isa, const std::vector<TrianglePair>& pairs) {
   ex::overlap_batch_with(isa, pairs.data(), pairs.size(), out.data());
   return ex::stats();
 }
+// How many of the pairs have their triangles' boxes apart (pass 1's box exit takes them).
+std::size_t boxes_apart(const std::vector<TrianglePair>& pairs) {
+  std::size_t n = 0;
+  for (const TrianglePair& p : pairs) {
+    const double* c = reinterpret_cast<const double*>(&p);
+    n += ex::detail::boxes_apart(ex::detail::box_of(c), ex::detail::box_of(c + 9)) ? 1u : 0u;
+  }
+  return n;
+}
 }  // namespace
 
 TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
@@ -946,10 +955,11 @@ TEST(Paths, EachRouteIsTakenWhereItShouldBe) {
       for (auto& v : p.t2.v) v = V(r.integer(-6, 6) + 0.5, r.integer(-6, 6) + 0.25, 3);
       coplanar.push_back(p);
     }
-    // every pair undecided by pass 1, fewer than `most` left by pass 2
+    // every pair undecided by pass 1 but those its box exit takes (boxes apart), fewer than
+    // `most` left by pass 2
     const auto second_pass_takes = [&](const std::vector<TrianglePair>& pairs, std::uint64_t most, const char* why) {
       const ex::Stats st = run_overlap(isa, pairs);
-      EXPECT_EQ(st.pending, pairs.size());
+      EXPECT_EQ(st.pending, pairs.size() - boxes_apart(pairs));
       EXPECT_LT(st.scalar, most) << why;
     };
     second_pass_takes(coplanar, 4096u / 5, "the degenerate and touching ones only");
@@ -1031,6 +1041,71 @@ TEST(Paths, EveryBatchLengthAndChunking) {
       ASSERT_EQ(ov[n], Overlap::unsupported) << "wrote past the end";
     }
   }
+}
+
+// ---------------------------------------------------------------- pass 1's exits
+
+// Pass 1 leaves a block at the overlap level when every lane has T1 certainly on one side of
+// T2's plane (algorithms/exact/README.md, "Pass 1's exits"): a lane that is not, at every position
+// of a block of every width, must still get its own answer.
+TEST(PassOne, TheFirstPlaneExitNeedsEveryLane) {
+  const TrianglePair above{tri({0, 0, 1}, {1, 0, 2}, {0, 1, 1}), kFloor};
+  const TrianglePair below{tri({5, 5, -1}, {6, 5, -2}, {5, 6, -3}), kFloor};
+  std::vector<TrianglePair> others = {
+      {tri({1, 1, -1}, {1, 1, 1}, {2, -3, 0}), kFloor},  // crossing: they meet
+      {tri({1, 1, 0}, {1, 2, 1}, {2, 1, 1}), kFloor},    // a vertex on T2's face: touching
+      {tri({9, 9, -1}, {9, 9, 1}, {10, 8, 0}), kFloor},  // T1 across π2 beside T2: disjoint
+      {tri({1, 1, 0}, {2, 1, 0}, {1, 2, 0}), kFloor},    // coplanar, inside T2
+  };
+  // crossing with six certain signs, the lone vertex above or below, at each index
+  for (double up : {1.0, -1.0})
+    for (const auto& o : kOrders)
+      others.push_back({permuted(tri({1, 1, -up}, {2, 1, -up}, {1, 2, up}), o), kFloor});
+  std::vector<TrianglePair> pairs;  // blocks of 16 (a whole number of blocks of every width)
+  for (const TrianglePair& other : others)
+    for (int at = 0; at < 16; ++at)
+      for (int k = 0; k < 16; ++k) pairs.push_back(k == at ? other : k % 3 ? above : below);
+  expect_all_paths_agree(pairs, "one lane among one-sided ones");
+}
+
+// Pass 1's box exit (overlap level): of the lanes left open, those whose boxes are apart are
+// answered there and not sent on, and only those: boxes that touch (hi = lo) can hold touching
+// triangles, and a coordinate that is not finite must still be declined.
+TEST(PassOne, TheBoxExitTakesApartBoxesOnly) {
+  const Triangle t1 = tri({0, 0, 3}, {2, 0, 3}, {0, 2, 3});  // every sign within the bound
+  const TrianglePair apart{t1, tri({2.5, 0, 3}, {4, 0, 3}, {2.5, 1, 3})};
+  const TrianglePair touching{t1, tri({2, -1, 3}, {4, 0, 3}, {2, 1, 3})};  // hi1 = lo2 in x; T1's vertex on T2's edge
+  const TrianglePair corner{t1, tri({2, 2, 3}, {4, 2, 3}, {2, 4, 3})};     // boxes share a corner, triangles apart
+  std::vector<TrianglePair> pairs;
+  for (const TrianglePair& p : {apart, touching, corner})
+    for (const TrianglePair& v : all_orders(p)) pairs.push_back(v);
+  GenRng r(33);
+  for (std::size_t i = pairs.size(); i > 1; --i) std::swap(pairs[i - 1], pairs[static_cast<std::size_t>(r.integer(0, static_cast<std::int64_t>(i) - 1))]);
+  expect_all_paths_agree(pairs, "apart, touching and corner boxes");
+
+  std::vector<TrianglePair> only_apart, only_touching;
+  for (int i = 0; i < 64; ++i) {
+    only_apart.push_back(all_orders(apart)[static_cast<std::size_t>(i)]);
+    only_touching.push_back(all_orders(touching)[static_cast<std::size_t>(i)]);
+  }
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    EXPECT_EQ(run_overlap(isa, only_apart).pending, 0u) << ex::to_string(isa) << ": decided by pass 1";
+    EXPECT_EQ(run_overlap(isa, only_touching).pending, 64u) << ex::to_string(isa) << ": left to pass 2";
+  }
+
+  // a NaN or an infinity anywhere in an apart pair, in every lane: declined
+  for (int k = 0; k < 18; ++k)
+    for (double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+      std::vector<TrianglePair> batch(16, apart);
+      for (int at = 0; at < 16; at += 5) {
+        TrianglePair& p = batch[static_cast<std::size_t>(at)];
+        (k < 9 ? p.t1[k / 3] : p.t2[(k - 9) / 3])[k % 3] = bad;
+      }
+      for (const auto& [isa, out, rel] : answers_on_every_isa(batch))
+        for (std::size_t i = 0; i < batch.size(); ++i)
+          ASSERT_EQ(out[i], i % 5 == 0 ? Overlap::unsupported : Overlap::no) << ex::to_string(isa) << " " << k << " " << bad << " #" << i;
+    }
 }
 
 // ---------------------------------------------------------------- coplanar pairs
