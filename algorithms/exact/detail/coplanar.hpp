@@ -166,7 +166,7 @@ bool coplanar_known(const double* c, Grid& g, Relation& out) {
   const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
   const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
   const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
-  const int k = (ax >= ay) & (ax >= az) ? 0 : (ay >= az ? 1 : 2);
+  const int k = ((ax >= ay) & (ax >= az)) ? 0 : (ay >= az ? 1 : 2);
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
   const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
   const Projected p = project(t1, t2, i, j);
