@@ -88,7 +88,7 @@ inline constexpr std::size_t kSlice = 128;
 // What the second pass computed for each pair of a slice, by the pair's slot (its place in the
 // slice's pending list), for the scalar pass (`handover_pass`): the pair's bound B and its six
 // plane values, evaluated as the one-pair filter evaluates them, and the box of its six points.
-// Stored for every slot, read only for those the second pass leaves.
+// Written for every slot of a block with a pair the second pass leaves, read only for those.
 struct Handover {
   double bound[kSlice];
   double s1[3][kSlice];  // T1's vertex k against π2
@@ -105,8 +105,8 @@ struct Passes {
   // others to `pending`; returns their count.
   std::size_t (*first)(const TrianglePair* pairs, std::size_t n, Out* out, std::uint32_t* pending);
   // The `count` (at most kSlice) pairs at those indices: writes the decided answers, the slots
-  // of the rest to `rest` (with kGridFlag where the pair is on the grid) and every slot's values
-  // to the handover; returns the count of the rest.
+  // of the rest to `rest` (with kGridFlag where the pair is on the grid) and their values to
+  // the handover; returns the count of the rest.
   std::size_t (*second)(const TrianglePair* pairs, Out* out, const std::uint32_t* pending, std::size_t count,
                         std::uint32_t* rest, Handover* handover);
 };

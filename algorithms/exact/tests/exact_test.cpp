@@ -1383,9 +1383,9 @@ std::vector<TrianglePair> handover_mix(GenRng& r, std::size_t n) {
 
 }  // namespace
 
-// Pass 2 hands every slot the values the one-pair filter would compute for its pair (the bound,
-// the six plane values, which are within the bound, the box): `handover_pass` runs `finish` on
-// them in place of the filter (algorithms/exact/README.md, "The scalar pass from pass 2's values").
+// Pass 2 hands each slot it leaves the values the one-pair filter would compute for its pair (the
+// bound, the six plane values, which are within the bound, the box): `handover_pass` runs `finish`
+// on them in place of the filter (algorithms/exact/README.md, "The scalar pass from pass 2's values").
 // Pending indices in a shuffled order and slices of every length up to kSlice, on every ISA; it
 // fails when a slot is off by one, a row or a bit of `open` is exchanged, or the bound or the box
 // is not the filter's.
@@ -1410,8 +1410,12 @@ TEST(Handover, PassTwoHandsOverTheFiltersValues) {
         const std::size_t nr = relation ? kernel->relation.second(pairs.data(), rel.data(), pending, count, rest, &h)
                                         : kernel->overlap.second(pairs.data(), ov.data(), pending, count, rest, &h);
         ASSERT_LE(nr, count);
-        for (std::size_t k = 0; k < nr; ++k) ASSERT_LT(rest[k] & ~ex::kGridFlag, count) << "a slot, not an index";
-        for (std::size_t slot = 0; slot < count; ++slot) {
+        if (count >= 37) {
+          ASSERT_GT(nr, count / 5) << "the touching and nearly flat pairs are handed on";
+        }
+        for (std::size_t k = 0; k < nr; ++k) {
+          const std::uint32_t slot = rest[k] & ~ex::kGridFlag;
+          ASSERT_LT(slot, count) << "a slot, not an index";
           const double* c = pairs[pending[slot]].t1[0].data();
           const d::Box box = d::union_of(d::box_of(c), d::box_of(c + 9));
           double s1[3], s2[3];
@@ -1462,4 +1466,32 @@ TEST(Handover, TheScalarPassDecidesPassTwosLeftovers) {
     EXPECT_EQ(st.filter, 0u) << "pass 2's leftovers skip the filter";
   }
   expect_all_paths_agree(mix, "handover mix");
+}
+
+// Pass 2 leaves a block at the overlap level when every lane has a shared vertex
+// (algorithms/exact/README.md, "Pass 2's shared-vertex exit"): a lane that has none, at every
+// position of a block of every width among lanes that do, must still get its own answer. The
+// lone lanes are left undecided by pass 1 (a vertex on the other plane, boxes overlapping) and
+// disjoint or touching: an exit taken on `any` lane answers the disjoint ones `yes`, or leaves
+// them to the scalar pass without their values.
+TEST(Handover, PassTwosSharedVertexExitNeedsEveryLane) {
+  const TrianglePair shared{tri({0, 0, 0}, {1, 3, 2}, {2, -1, 1}), kFloor};  // T1's first vertex is T2's
+  const std::vector<TrianglePair> others = {
+      {tri({3, 3, 0}, {1, 1, 2}, {2, 2, 2}), kFloor},  // a vertex on π2 outside T2, π1 across it: disjoint
+      {tri({1, 1, 0}, {1, 2, 1}, {2, 1, 1}), kFloor},  // a vertex on T2's face: touching
+      {tri({3, 3, 0}, {5, 3, 0}, {3, 5, 0}), kFloor},  // coplanar, apart but boxes overlapping
+  };
+  ASSERT_FALSE(oracle_label(others[0]).overlap);
+  ASSERT_FALSE(oracle_label(others[2]).overlap);
+  std::vector<TrianglePair> pairs;  // blocks of 16 (a whole number of blocks of every width)
+  for (const TrianglePair& other : others)
+    for (int at = 0; at < 16; ++at)
+      for (int k = 0; k < 16; ++k)
+        pairs.push_back(k == at ? translated(other, V(0.1, 0.3, 0.7)) : translated(shared, V(0.1, 0.3, 0.7)));
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    const ex::Stats st = run_overlap(isa, pairs);
+    EXPECT_EQ(st.pending, pairs.size()) << ex::to_string(isa) << ": pass 1 leaves every pair";
+  }
+  expect_all_paths_agree(pairs, "one lane among shared vertices");
 }
