@@ -86,8 +86,9 @@ inline constexpr std::size_t kChunk = 4096;  // pairs per SIMD pass before its e
 inline constexpr std::size_t kSlice = 128;
 
 // What the second pass computed for each pair of a slice, by the pair's slot (its place in the
-// slice's pending list), for the scalar pass (`handover_pass`): the pair's bound B and its six
-// plane values, evaluated as the one-pair filter evaluates them, and the box of its six points.
+// slice's pending list), for the scalar pass (`handover_pass`): the pair's bound B, its six
+// plane values, evaluated as the one-pair filter evaluates them, which of them are within B, and
+// the box of its six points.
 // Written for every slot of a block with a pair the second pass leaves, read only for those.
 struct Handover {
   double bound[kSlice];
