@@ -81,6 +81,23 @@ inline RelationAnswer relation(const TrianglePair& pair) { return detail::relati
 namespace detail {
 
 inline constexpr std::size_t kChunk = 4096;  // pairs per SIMD pass before its exact pass
+// Pending pairs per second pass before the scalar pass takes what it leaves: the handover below
+// stays on the stack (13 KB) and in the cache between the two.
+inline constexpr std::size_t kSlice = 128;
+
+// What the second pass computed for each pair of a slice, by the pair's slot (its place in the
+// slice's pending list), for the scalar pass (`handover_pass`): the pair's bound B, its six
+// plane values, evaluated as the one-pair filter evaluates them, which of them are within B, and
+// the box of its six points.
+// Written for every slot of a block with a pair the second pass leaves, read only for those.
+struct Handover {
+  double bound[kSlice];
+  double s1[3][kSlice];  // T1's vertex k against π2
+  double s2[3][kSlice];  // T2's vertex k against π1
+  double lo[3][kSlice];  // the minimum and the maximum of the six points per axis
+  double hi[3][kSlice];
+  std::uint64_t open[kSlice];  // PairSigns::open: bit k for s1[k], 3 + k for s2[k], within the bound
+};
 
 // One instruction set's SIMD passes at one level (detail/kernel.inc, detail/kernel_pass2.inc).
 template <class Out>
@@ -88,10 +105,11 @@ struct Passes {
   // The n pairs (n a multiple of the lanes): writes the decided answers and the indices of the
   // others to `pending`; returns their count.
   std::size_t (*first)(const TrianglePair* pairs, std::size_t n, Out* out, std::uint32_t* pending);
-  // The `count` pairs at those indices: writes the decided answers and the rest's indices (with
-  // kGridFlag where the pair is on the grid) to `rest`; returns their count.
+  // The `count` (at most kSlice) pairs at those indices: writes the decided answers, the slots
+  // of the rest to `rest` (with kGridFlag where the pair is on the grid) and their values to
+  // the handover; returns the count of the rest.
   std::size_t (*second)(const TrianglePair* pairs, Out* out, const std::uint32_t* pending, std::size_t count,
-                        std::uint32_t* rest);
+                        std::uint32_t* rest, Handover* handover);
 };
 struct Kernel {
   Passes<Overlap> overlap;
@@ -104,28 +122,70 @@ struct Kernel {
 // By Isa; nullptr where no kernel is compiled (scalar, another architecture's sets).
 inline constexpr std::array<const Kernel*, kIsas.size()> kKernels = TRITRI_LANES_TABLE(kKernel);
 
+// Where the scalar pass's pairs were decided, counted locally and added to the thread's stats once.
+struct RouteCounts {
+  std::uint64_t n[5] = {};
+  void add_to(Stats& st) const {
+    st.filter += n[static_cast<int>(Route::filter)];
+    st.shared += n[static_cast<int>(Route::shared)];
+    st.grid += n[static_cast<int>(Route::grid)];
+    st.filtered += n[static_cast<int>(Route::filtered)];
+    st.declined += n[static_cast<int>(Route::declined)];
+  }
+};
+
+// The pairs at the `count` indices of `pending`, each from scratch: the one-pair filter, then
+// `finish` (where no SIMD kernel runs).
 template <bool kRelation, class Out>
 __attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, const std::uint32_t* pending,
                                           std::size_t count) {
-  Stats& st = stats();
-  st.scalar += count;
+  RouteCounts routes;
   for (std::size_t k = 0; k < count; ++k) {
-    const std::uint32_t j = pending[k] & ~kGridFlag;
+    const std::uint32_t j = pending[k];
     Route route = Route::filtered;
-    const RelationAnswer a = decide<kRelation>(pairs[j], (pending[k] & kGridFlag) != 0u, &route);
+    const RelationAnswer a = decide<kRelation>(pairs[j], false, &route);
     if constexpr (kRelation) out[j] = a;
     else out[j] = to_overlap(a);
-    st.filter += route == Route::filter;
-    st.shared += route == Route::shared;
-    st.grid += route == Route::grid;
-    st.filtered += route == Route::filtered;
-    st.declined += route == Route::declined;
+    ++routes.n[static_cast<int>(route)];
   }
+  Stats& st = stats();
+  st.scalar += count;
+  routes.add_to(st);
+}
+
+// The pairs the second pass left (`rest`: slots of `pending`, with kGridFlag), from its values:
+// `finish` on the bound, the plane values and the box the second pass computed, without the
+// one-pair filter (algorithms/exact/README.md, "The scalar pass from pass 2's values").
+template <bool kRelation, class Out>
+__attribute__((noinline)) void handover_pass(const TrianglePair* pairs, Out* out, const std::uint32_t* pending,
+                                             const std::uint32_t* rest, std::size_t count, const Handover& h) {
+  RouteCounts routes;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t slot = rest[k] & ~kGridFlag;
+    const std::uint32_t j = pending[slot];
+    PairSigns ps;
+    ps.bound = h.bound[slot];
+    for (int v = 0; v < 3; ++v) ps.s1[v] = h.s1[v][slot], ps.s2[v] = h.s2[v][slot];
+    ps.open = static_cast<unsigned>(h.open[slot]);
+    ps.box.lo = Double2{h.lo[0][slot], h.lo[1][slot]};
+    ps.box.hi = Double2{h.hi[0][slot], h.hi[1][slot]};
+    ps.box.lo_z = h.lo[2][slot];
+    ps.box.hi_z = h.hi[2][slot];
+    Route route = Route::filtered;
+    const RelationAnswer a = finish<kRelation>(pairs[j], ps, (rest[k] & kGridFlag) != 0u, &route);
+    if constexpr (kRelation) out[j] = a;
+    else out[j] = to_overlap(a);
+    ++routes.n[static_cast<int>(route)];
+  }
+  Stats& st = stats();
+  st.scalar += count;
+  routes.add_to(st);
 }
 
 template <bool kRelation, class Out>
 void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
-  std::uint32_t pending[kChunk], rest[kChunk];
+  std::uint32_t pending[kChunk], rest[kSlice];
+  Handover handover;
   stats().pairs += n;
   const Kernel* kernel = kKernels[static_cast<std::size_t>(isa)];
   const std::size_t lanes = kernel ? lanes::width(isa) : 0;  // none: every pair to the exact pass
@@ -140,10 +200,15 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
     std::size_t np = passes ? passes->first(pairs + start, simd, out + start, pending) : 0;
     for (std::size_t j = simd; j < m; ++j) pending[np++] = static_cast<std::uint32_t>(j);
     stats().pending += np;
-    std::size_t nr = np;
-    if (passes) nr = passes->second(pairs + start, out + start, pending, np, rest);
-    else std::memcpy(rest, pending, np * sizeof(std::uint32_t));
-    exact_pass<kRelation>(pairs + start, out + start, rest, nr);
+    if (!passes) {
+      exact_pass<kRelation>(pairs + start, out + start, pending, np);
+      continue;
+    }
+    for (std::size_t s = 0; s < np; s += kSlice) {
+      const std::size_t count = np - s < kSlice ? np - s : kSlice;
+      const std::size_t nr = passes->second(pairs + start, out + start, pending + s, count, rest, &handover);
+      handover_pass<kRelation>(pairs + start, out + start, pending + s, rest, nr, handover);
+    }
   }
 }
 

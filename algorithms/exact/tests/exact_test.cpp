@@ -1352,3 +1352,146 @@ TEST(CoplanarApartBoxes, AreDecidedInLanesOnEveryIsa) {
   for (const auto& [isa, out, rel] : answers_on_every_isa(bad))
     for (std::size_t k = 0; k < bad.size(); ++k) EXPECT_EQ(out[k], Overlap::unsupported) << k << " " << ex::to_string(isa);
 }
+
+// ---------------------------------------------------------------- the scalar pass from pass 2's values
+
+namespace {
+
+// Pairs the second pass leaves to the scalar pass, and pairs it or pass 1 decides, mixed so that
+// a pair's slot, its pending index and its place in `rest` all differ: touching off the grid (a
+// vertex on an edge's midpoint, moved off it; zeros through the shared conversion), nearly flat
+// (values within the bound that are not zero), shared edges (the relation level's shortcut),
+// exactly coplanar on the grid (pass 2), random (pass 1).
+std::vector<TrianglePair> handover_mix(GenRng& r, std::size_t n) {
+  std::vector<TrianglePair> out;
+  for (std::size_t i = 0; out.size() < n; ++i) {
+    TrianglePair p = small_int_pair(r, 6);
+    switch (i % 5) {
+      case 0: p.t2[0] = (p.t1[0] + p.t1[1]) * 0.5, p = translated(scaled(p, -30), V(0.1, 0.3, 0.7)); break;
+      case 1: p = near_flat(r, static_cast<int>(r.integer(-20, 20)), static_cast<int>(r.integer(0, 4))); break;
+      case 2: p.t2[1] = p.t1[0], p.t2[2] = p.t1[1], p = translated(p, V(0.1, 0.3, 0.7)); break;
+      case 3:
+        for (auto& v : p.t1.v) v[2] = 3;
+        for (auto& v : p.t2.v) v[2] = 3;
+        break;
+      default: p = random_pair(r); break;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+// Pass 2 hands each slot it leaves the values the one-pair filter would compute for its pair (the
+// bound, the six plane values, which are within the bound, the box): `handover_pass` runs `finish`
+// on them in place of the filter (algorithms/exact/README.md, "The scalar pass from pass 2's values").
+// Pending indices in a shuffled order and slices of every length up to kSlice, on every ISA; it
+// fails when a slot is off by one, a row or a bit of `open` is exchanged, or the bound or the box
+// is not the filter's.
+TEST(Handover, PassTwoHandsOverTheFiltersValues) {
+  namespace d = ex::detail;
+  GenRng r(41);
+  const std::vector<TrianglePair> pairs = handover_mix(r, 3 * d::kSlice);
+  std::vector<std::uint32_t> order(pairs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>((k * 7) % order.size());
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    SCOPED_TRACE(ex::to_string(isa));
+    const d::Kernel* kernel = d::kKernels[static_cast<std::size_t>(isa)];
+    ASSERT_NE(kernel, nullptr);
+    for (std::size_t count : {std::size_t{1}, std::size_t{37}, d::kSlice - 1, d::kSlice}) {
+      for (bool relation : {false, true}) {
+        d::Handover h;
+        std::uint32_t rest[d::kSlice];
+        std::vector<Overlap> ov(pairs.size());
+        std::vector<RelationAnswer> rel(pairs.size());
+        const std::uint32_t* pending = order.data() + (count % 3);
+        const std::size_t nr = relation ? kernel->relation.second(pairs.data(), rel.data(), pending, count, rest, &h)
+                                        : kernel->overlap.second(pairs.data(), ov.data(), pending, count, rest, &h);
+        ASSERT_LE(nr, count);
+        if (count >= 37) {
+          ASSERT_GT(nr, count / 5) << "the touching and nearly flat pairs are handed on";
+        }
+        for (std::size_t k = 0; k < nr; ++k) {
+          const std::uint32_t slot = rest[k] & ~ex::kGridFlag;
+          ASSERT_LT(slot, count) << "a slot, not an index";
+          const double* c = pairs[pending[slot]].t1[0].data();
+          const d::Box box = d::union_of(d::box_of(c), d::box_of(c + 9));
+          double s1[3], s2[3];
+          d::plane_values(c + 9, c, s1);
+          d::plane_values(c, c + 9, s2);
+          const double b = d::bound_of_box(box);
+          const unsigned open = (~(d::above(s1, b) | d::below(s1, b)) & 7u) | (~(d::above(s2, b) | d::below(s2, b)) & 7u) << 3;
+          ASSERT_EQ(h.bound[slot], b) << slot;
+          for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(h.s1[k][slot], s1[k]) << slot << " " << k;
+            ASSERT_EQ(h.s2[k][slot], s2[k]) << slot << " " << k;
+          }
+          ASSERT_EQ(h.open[slot], open) << slot;
+          const double lo[3] = {box.lo[0], box.lo[1], box.lo_z}, hi[3] = {box.hi[0], box.hi[1], box.hi_z};
+          for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(h.lo[k][slot], lo[k]) << slot << " " << k;
+            ASSERT_EQ(h.hi[k][slot], hi[k]) << slot << " " << k;
+          }
+        }
+      }
+    }
+  }
+}
+
+// The scalar pass decides pass 2's leftovers from its values without the filter, and the shared
+// edges among them by the shortcut (their candidates come from the handed-over `open`); answers
+// against the oracle over more than one slice, both levels, every ISA.
+TEST(Handover, TheScalarPassDecidesPassTwosLeftovers) {
+  GenRng r(42);
+  const std::vector<TrianglePair> mix = handover_mix(r, 1500);
+  std::vector<TrianglePair> edges;  // a shared edge at each (i, j), off the grid
+  for (int n = 0; n < 450; ++n) {
+    TrianglePair p = random_pair(r);
+    const int i = n % 3, j = (n / 3) % 3;
+    p.t2[j] = p.t1[i], p.t2[(j + 1) % 3] = p.t1[(i + 1) % 3];
+    edges.push_back(p);
+  }
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    SCOPED_TRACE(ex::to_string(isa));
+    std::vector<RelationAnswer> rel(edges.size());
+    ex::reset_stats();
+    ex::relation_batch_with(isa, edges.data(), edges.size(), rel.data());
+    EXPECT_EQ(ex::stats().shared, edges.size());
+    for (const RelationAnswer& a : rel) ASSERT_EQ(a.relation, Relation::touch_segment);
+    const ex::Stats st = run_overlap(isa, mix);
+    EXPECT_GT(st.scalar, mix.size() / 5) << "the mix reaches the scalar pass";
+    EXPECT_EQ(st.filter, 0u) << "pass 2's leftovers skip the filter";
+  }
+  expect_all_paths_agree(mix, "handover mix");
+}
+
+// Pass 2 leaves a block at the overlap level when every lane has a shared vertex
+// (algorithms/exact/README.md, "Pass 2's shared-vertex exit"): a lane that has none, at every
+// position of a block of every width among lanes that do, must still get its own answer. The
+// lone lanes are left undecided by pass 1 (a vertex on the other plane, boxes overlapping) and
+// disjoint or touching: an exit taken on `any` lane answers the disjoint ones `yes`, or leaves
+// them to the scalar pass without their values.
+TEST(Handover, PassTwosSharedVertexExitNeedsEveryLane) {
+  const TrianglePair shared{tri({0, 0, 0}, {1, 3, 2}, {2, -1, 1}), kFloor};  // T1's first vertex is T2's
+  const std::vector<TrianglePair> others = {
+      {tri({3, 3, 0}, {1, 1, 2}, {2, 2, 2}), kFloor},  // a vertex on π2 outside T2, π1 across it: disjoint
+      {tri({1, 1, 0}, {1, 2, 1}, {2, 1, 1}), kFloor},  // a vertex on T2's face: touching
+      {tri({3, 3, 0}, {5, 3, 0}, {3, 5, 0}), kFloor},  // coplanar, apart but boxes overlapping
+  };
+  ASSERT_FALSE(oracle_label(others[0]).overlap);
+  ASSERT_FALSE(oracle_label(others[2]).overlap);
+  std::vector<TrianglePair> pairs;  // blocks of 16 (a whole number of blocks of every width)
+  for (const TrianglePair& other : others)
+    for (int at = 0; at < 16; ++at)
+      for (int k = 0; k < 16; ++k)
+        pairs.push_back(k == at ? translated(other, V(0.1, 0.3, 0.7)) : translated(shared, V(0.1, 0.3, 0.7)));
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    const ex::Stats st = run_overlap(isa, pairs);
+    EXPECT_EQ(st.pending, pairs.size()) << ex::to_string(isa) << ": pass 1 leaves every pair";
+  }
+  expect_all_paths_agree(pairs, "one lane among shared vertices");
+}
