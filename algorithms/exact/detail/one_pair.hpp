@@ -193,24 +193,32 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   return Relation::unsupported;
 }
 
-// The kernel's grid test (grid_lanes) for one pair: max|coordinate| m in [2^-344, 2^300) and every
-// coordinate x a multiple of 2^q, q = e - 14 for 2^e <= m < 2^(e+1): fl(fl(x + C) - C) = x with
-// C = 1.5·2^(q+52) built from m's exponent bits (algorithms/exact/README.md, "The grid case (pass 2
-// and `Plain`)"). Then every value the filter computed is exact. `m` is max|coordinate| (the
-// filter's box has it: box_magnitudes).
-inline bool on_grid(const double* c, double m) {
-  if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
-  std::uint64_t bits;
-  std::memcpy(&bits, &m, sizeof bits);
-  bits = ((bits & 0x7ff0000000000000ull) + (38ull << 52)) | (1ull << 51);
-  double big;
-  std::memcpy(&big, &bits, sizeof big);
-  const Double2 big2 = {big, big};
+// The grid test axis by axis: each axis k its own unit 2^q_k, q_k = e_k - 14 for 2^e_k <= m_k <
+// 2^(e_k+1), m_k = max(the axis' largest |coordinate|, 2^-344) below 2^300, and every coordinate x
+// along k a multiple of 2^q_k: fl(fl(x + C_k) - C_k) = x with C_k = 1.5·2^(q_k+52) built from m_k's
+// exponent bits. Every monomial of a det3 or det2 of the pair's points takes one factor per axis,
+// so all of a value's terms share one unit and every value the filter computed is exact
+// (algorithms/exact/README.md, "The grid case, axis by axis"); a pair on the kernel's grid (one q
+// for all axes) passes it. `mag`: each axis' largest |coordinate| (box_magnitudes, finite input).
+inline bool on_grid(const double* c, const double (&mag)[3]) {
+  if (!(dmax(mag[0], dmax(mag[1], mag[2])) < 0x1p300)) return false;
+  // C_k from m_k's exponent bits, x and y in one register: the exponent plus 38, and the bit
+  // below the leading one
+  const Long2 exponent = {0x7ff0000000000000ll, 0x7ff0000000000000ll}, up = {38ll << 52, 38ll << 52},
+              half = {1ll << 51, 1ll << 51};
+  const Double2 least = {0x1p-344, 0x1p-344};
+  Double2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]};
+  mxy = mxy > least ? mxy : least;
+  mz = mz > least ? mz : least;
+  const Double2 cxy = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(mxy) & exponent) + up) | half);
+  const Double2 cz = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(mz) & exponent) + up) | half);
+  // two coordinates at a time, read once: x y | z x | y z, three times over
+  const Double2 big2[3] = {cxy, Double2{cz[0], cxy[0]}, Double2{cxy[1], cz[0]}};
   Long2 grid = {-1, -1};
-  for (int i = 0; i < 9; ++i) {  // two coordinates at a time, read once
+  for (int i = 0; i < 9; ++i) {
     Double2 v;
     std::memcpy(&v, c + 2 * i, sizeof v);
-    grid &= (v + big2) - big2 == v;
+    grid &= (v + big2[i % 3]) - big2[i % 3] == v;
   }
   return (grid[0] & grid[1]) != 0;
 }
@@ -228,7 +236,7 @@ struct LazyGrid {
   double mag[3];
   intexact::PairInt61 x;
   bool on() {
-    if (state < 0) state = on_grid(c, dmax(mag[0], dmax(mag[1], mag[2]))) ? 1 : 0;
+    if (state < 0) state = on_grid(c, mag) ? 1 : 0;
     return state != 0;
   }
   bool converted() {
