@@ -14,8 +14,9 @@
 //   shared    exact coordinate equality of vertices (finite input only): at the overlap level a
 //             shared vertex is a common point; at the relation level the filter's signs decide a
 //             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
-//   exact     the six plane signs made exact (the grid test once, else the per-call filters and
-//             the integer engine); crossing and one-sided pairs decided from them with the
+//   exact     the six plane signs made exact (against a triangle in an axis-parallel plane by
+//             comparisons and one o2; else the grid test once, axis by axis, else the pair's
+//             integer conversion or the per-call filters and the integer engine); crossing and one-sided pairs decided from them with the
 //             pair's bound for G1, G2; coplanar proper pairs in 2-D (coplanar.hpp); degenerate
 //             pairs by the classification.
 // Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call" and
@@ -55,6 +56,12 @@ inline void plane_values(const double* pl, const double* pts, double s[3]) {
 // Bits of the certainly positive (pos) and certainly negative (neg) values among three.
 inline unsigned above(const double s[3], double b) { return (s[0] > b) | (s[1] > b) << 1 | (s[2] > b) << 2; }
 inline unsigned below(const double s[3], double b) { return (s[0] < -b) | (s[1] < -b) << 1 | (s[2] < -b) << 2; }
+
+// All three certainly positive or all certainly negative (pos, neg: above's and below's bits),
+// as one test: x + 1 has bit 3 exactly when x = 7 (x <= 7). Written so because GCC compiles
+// `(pos == 7) | (neg == 7)` as two branches, and the first one, on which side a one-sided
+// triangle lies, is a coin toss on random input.
+inline bool one_sided_bits(unsigned pos, unsigned neg) { return (((pos + 1u) | (neg + 1u)) & 8u) != 0u; }
 
 // The planes are certainly not parallel: two distances to one plane differ by more than 3B.
 inline bool certainly_slanted(const double s[3], double b) {
@@ -102,12 +109,12 @@ template <bool kRelation>
   plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
   const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
   if constexpr (!kRelation)
-    if ((pos1 == 7u) | (neg1 == 7u)) return 0;
+    if (one_sided_bits(pos1, neg1)) return 0;
   plane_values(c, c + 9, ps.s2);  // step 2: T2 against π1
   const unsigned pos2 = above(ps.s2, b), neg2 = below(ps.s2, b);
   const unsigned open = (~(pos1 | neg1) & 7u) | (~(pos2 | neg2) & 7u) << 3;
   if constexpr (!kRelation) {
-    if ((pos2 == 7u) | (neg2 == 7u)) return 0;
+    if (one_sided_bits(pos2, neg2)) return 0;
   } else if ((pos1 == 7u) | (neg1 == 7u) | (pos2 == 7u) | (neg2 == 7u)) {
     // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
     // proves its triangle proper) and the planes certainly not parallel; else undecided
@@ -264,6 +271,23 @@ struct LazyGrid {
   return sign_o3_within(v, g, a, b, cc, d);
 }
 
+// The exact signs of the three points at `pts` against the plane of the triangle at `pl` when
+// that triangle lies in an axis-parallel plane x_k = h (its three points share coordinate k
+// exactly): o3(a, b, c, x) = (x_k - h)·o2(a, b, c; k+1, k+2), so each sign is a comparison times
+// one o2 sign for the three (algorithms/exact/README.md, "A triangle in an axis-parallel
+// plane"). False, and `s` untouched, when the triangle shares no coordinate. Finite input.
+inline bool axis_plane_signs(const double* pl, const double* pts, int s[3]) {
+  const bool on_x = (pl[0] == pl[3]) & (pl[0] == pl[6]), on_y = (pl[1] == pl[4]) & (pl[1] == pl[7]);
+  const bool on_z = (pl[2] == pl[5]) & (pl[2] == pl[8]);
+  if (!(on_x | on_y | on_z)) return false;
+  const int k = on_x ? 0 : (on_y ? 1 : 2);
+  const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
+  const int orient = Filtered::o2(pl, pl + 3, pl + 6, i, j);
+  const double h = pl[k];
+  for (int v = 0; v < 3; ++v) s[v] = orient * ((pts[3 * v + k] > h) - (pts[3 * v + k] < h));
+  return true;
+}
+
 // Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
 // proper, neither sign triple one-sided nor all zero; G1 and G2 against the pair's bound first.
 template <bool kRelation>
@@ -311,7 +335,12 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   // axis-parallel plane prove the zeros without arithmetic (their values are computed zeros).
   const bool flat = (ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c);
   int known[6];
-  for (int k = 0; k < 3; ++k) known[k] = flat ? 0 : sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
+  // a value within the bound: on the grid its own sign; off it, against a triangle in an
+  // axis-parallel plane, comparisons and one o2 (no integer conversion)
+  if (flat)
+    known[0] = known[1] = known[2] = 0;
+  else if (!((ps.open & 7u) != 0u && !g.on() && axis_plane_signs(c + 9, c, known)))
+    for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
   if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
     if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
@@ -319,7 +348,10 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   }
   // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
   // the classification reads s2 only when both are proper, so zeros are its exact signs
-  for (int k = 0; k < 3; ++k) known[3 + k] = any1 ? sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k) : 0;
+  if (!any1)
+    known[3] = known[4] = known[5] = 0;
+  else if (!((ps.open & 070u) != 0u && !g.on() && axis_plane_signs(c, c + 9, known + 3)))
+    for (int k = 0; k < 3; ++k) known[3 + k] = sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k);
   const bool any2 = (known[3] | known[4] | known[5]) != 0;
   if (any1 & any2) {  // both triangles proper, the planes distinct
     const bool one1 = one_sided(known), one2 = one_sided(known + 3);

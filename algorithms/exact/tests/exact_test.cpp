@@ -1441,3 +1441,46 @@ TEST(GridAxisByAxis, TouchingPairsScaledPerAxisAreDecidedOnIt) {
   EXPECT_GT(grid, off / 4);
   expect_all_paths_agree(pairs, "scaled per axis");
 }
+
+// ---------------------------------------------------------------- a triangle in an axis-parallel plane
+
+TEST(AxisPlane, SignsAgainstItAreAComparisonTimesItsOrientation) {
+  // T1 in the plane z = h off every grid (fractions of tenths: spans far above 15 bits, and
+  // above 61 with the 2^-60 moves); T2 with a vertex on the plane inside T1, one ulp below or
+  // above it, or two on it; every order, every axis. With one vertex near the plane only the
+  // plane values are within the bound (G1, G2 are far from zero), so the answers need no
+  // integer determinant; a wrong sign of the orientation or of x_k - h makes the one-ulp pairs
+  // one-sided or crossing the wrong way.
+  const double h = 0.7;
+  const Triangle t1 = tri({0.1, 0.3, h}, {4.1, 0.3, h}, {0.1, 4.3, h});
+  const auto at = [&](double x, double y, double z) { return V(x, y, z); };
+  std::vector<TrianglePair> one_near, edge_on;
+  for (const double px : {1.1, 0.9 + 0x1p-60})
+    for (const double z : {h, std::nextafter(h, -1.0), std::nextafter(h, 2.0)}) {
+      const V p = at(px, 1.3, z);
+      one_near.push_back({t1, tri(p, p + V(1, 0, 1), p + V(0, 1, 2))});      // touches, or crosses, or above
+      one_near.push_back({t1, tri(p, p + V(1, 1, -1), p + V(-1, 0.5, 1))});  // crosses through the vertex
+      edge_on.push_back({t1, tri(p, at(2.1, 0.8, h), p + V(0, 0, 1))});      // an edge on the plane, or near
+    }
+  std::vector<TrianglePair> pairs;
+  for (const auto& b : one_near)
+    for (const auto& v : every_order_and_axis(b)) pairs.push_back(v);
+  ex::intexact::counts() = {};
+  for (const TrianglePair& p : pairs) {
+    ex::overlap(p);
+    ex::relation(p);
+  }
+  const auto& n = ex::intexact::counts();
+  EXPECT_EQ(n.pair3 + n.fast3 + n.middle3 + n.wide3, 0u) << "the plane values took an integer determinant";
+  for (const auto& b : edge_on)
+    for (const auto& v : every_order_and_axis(b)) pairs.push_back(v);
+  expect_all_paths_agree(pairs, "a triangle in an axis-parallel plane");
+}
+
+TEST(OnePair, OneSidedBitsMeetTheirDefinition) {
+  // the filter's one-sided exits in one test: every pair of three-bit masks (+ 2 for a shift
+  // by one, or bit 2 for bit 3, answers some wrongly)
+  for (unsigned pos = 0; pos < 8; ++pos)
+    for (unsigned neg = 0; neg < 8; ++neg)
+      EXPECT_EQ(ex::detail::one_sided_bits(pos, neg), pos == 7u || neg == 7u) << pos << " " << neg;
+}
