@@ -129,8 +129,11 @@ template <bool kRelation>
   }
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
-  if ((g1 > b) | (g2 > b)) return 0;
-  if ((g1 < -b) & (g2 < -b)) return 1;
+  // on the larger of G1, G2 (finite here): one branch per exit, where the two comparisons of
+  // each were compiled as two branches on random signs
+  const double g = dmax(g1, g2);
+  if (g > b) return 0;
+  if (g < -b) return 1;
   // G1 or G2 within the bound: the box again rather than kept through step 3, where most pairs
   // are decided
   ps.open = 0u, ps.box = union_of(box_of(c), box_of(c + 9));
