@@ -14,8 +14,9 @@
 //   shared    exact coordinate equality of vertices (finite input only): at the overlap level a
 //             shared vertex is a common point; at the relation level the filter's signs decide a
 //             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
-//   exact     the six plane signs made exact (the grid test once, else the per-call filters and
-//             the integer engine); crossing and one-sided pairs decided from them with the
+//   exact     the six plane signs made exact (against a triangle in an axis-parallel plane by
+//             comparisons and one o2; else the grid test once, axis by axis, else the pair's
+//             integer conversion or the per-call filters and the integer engine); crossing and one-sided pairs decided from them with the
 //             pair's bound for G1, G2; coplanar proper pairs in 2-D (coplanar.hpp); degenerate
 //             pairs by the classification.
 // Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call" and
@@ -55,6 +56,12 @@ inline void plane_values(const double* pl, const double* pts, double s[3]) {
 // Bits of the certainly positive (pos) and certainly negative (neg) values among three.
 inline unsigned above(const double s[3], double b) { return (s[0] > b) | (s[1] > b) << 1 | (s[2] > b) << 2; }
 inline unsigned below(const double s[3], double b) { return (s[0] < -b) | (s[1] < -b) << 1 | (s[2] < -b) << 2; }
+
+// All three certainly positive or all certainly negative (pos, neg: above's and below's bits),
+// as one test: x + 1 has bit 3 exactly when x = 7 (x <= 7). Written so because GCC compiles
+// `(pos == 7) | (neg == 7)` as two branches, and the first one, on which side a one-sided
+// triangle lies, is a coin toss on random input.
+inline bool one_sided_bits(unsigned pos, unsigned neg) { return (((pos + 1u) | (neg + 1u)) & 8u) != 0u; }
 
 // The planes are certainly not parallel: two distances to one plane differ by more than 3B.
 inline bool certainly_slanted(const double s[3], double b) {
@@ -102,12 +109,12 @@ template <bool kRelation>
   plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
   const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
   if constexpr (!kRelation)
-    if ((pos1 == 7u) | (neg1 == 7u)) return 0;
+    if (one_sided_bits(pos1, neg1)) return 0;
   plane_values(c, c + 9, ps.s2);  // step 2: T2 against π1
   const unsigned pos2 = above(ps.s2, b), neg2 = below(ps.s2, b);
   const unsigned open = (~(pos1 | neg1) & 7u) | (~(pos2 | neg2) & 7u) << 3;
   if constexpr (!kRelation) {
-    if ((pos2 == 7u) | (neg2 == 7u)) return 0;
+    if (one_sided_bits(pos2, neg2)) return 0;
   } else if ((pos1 == 7u) | (neg1 == 7u) | (pos2 == 7u) | (neg2 == 7u)) {
     // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
     // proves its triangle proper) and the planes certainly not parallel; else undecided
@@ -122,8 +129,11 @@ template <bool kRelation>
   }
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
-  if ((g1 > b) | (g2 > b)) return 0;
-  if ((g1 < -b) & (g2 < -b)) return 1;
+  // on the larger of G1, G2 (finite here): one branch per exit, where the two comparisons of
+  // each were compiled as two branches on random signs
+  const double g = dmax(g1, g2);
+  if (g > b) return 0;
+  if (g < -b) return 1;
   // G1 or G2 within the bound: the box again rather than kept through step 3, where most pairs
   // are decided
   ps.open = 0u, ps.box = union_of(box_of(c), box_of(c + 9));
@@ -193,24 +203,32 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   return Relation::unsupported;
 }
 
-// The kernel's grid test (grid_lanes) for one pair: max|coordinate| m in [2^-344, 2^300) and every
-// coordinate x a multiple of 2^q, q = e - 14 for 2^e <= m < 2^(e+1): fl(fl(x + C) - C) = x with
-// C = 1.5·2^(q+52) built from m's exponent bits (algorithms/exact/README.md, "The grid case (pass 2
-// and `Plain`)"). Then every value the filter computed is exact. `m` is max|coordinate| (the
-// filter's box has it: box_magnitudes).
-inline bool on_grid(const double* c, double m) {
-  if (!(m >= 0x1p-344 && m < 0x1p300)) return false;
-  std::uint64_t bits;
-  std::memcpy(&bits, &m, sizeof bits);
-  bits = ((bits & 0x7ff0000000000000ull) + (38ull << 52)) | (1ull << 51);
-  double big;
-  std::memcpy(&big, &bits, sizeof big);
-  const Double2 big2 = {big, big};
+// The grid test axis by axis: each axis k its own unit 2^q_k, q_k = e_k - 14 for 2^e_k <= m_k <
+// 2^(e_k+1), m_k = max(the axis' largest |coordinate|, 2^-344) below 2^300, and every coordinate x
+// along k a multiple of 2^q_k: fl(fl(x + C_k) - C_k) = x with C_k = 1.5·2^(q_k+52) built from m_k's
+// exponent bits. Every monomial of a det3 or det2 of the pair's points takes one factor per axis,
+// so all of a value's terms share one unit and every value the filter computed is exact
+// (algorithms/exact/README.md, "The grid case, axis by axis"); a pair on the kernel's grid (one q
+// for all axes) passes it. `mag`: each axis' largest |coordinate| (box_magnitudes, finite input).
+inline bool on_grid(const double* c, const double (&mag)[3]) {
+  if (!(dmax(mag[0], dmax(mag[1], mag[2])) < 0x1p300)) return false;
+  // C_k from m_k's exponent bits, x and y in one register: the exponent plus 38, and the bit
+  // below the leading one
+  const Long2 exponent = {0x7ff0000000000000ll, 0x7ff0000000000000ll}, up = {38ll << 52, 38ll << 52},
+              half = {1ll << 51, 1ll << 51};
+  const Double2 least = {0x1p-344, 0x1p-344};
+  Double2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]};
+  mxy = mxy > least ? mxy : least;
+  mz = mz > least ? mz : least;
+  const Double2 cxy = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(mxy) & exponent) + up) | half);
+  const Double2 cz = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(mz) & exponent) + up) | half);
+  // two coordinates at a time, read once: x y | z x | y z, three times over
+  const Double2 big2[3] = {cxy, Double2{cz[0], cxy[0]}, Double2{cxy[1], cz[0]}};
   Long2 grid = {-1, -1};
-  for (int i = 0; i < 9; ++i) {  // two coordinates at a time, read once
+  for (int i = 0; i < 9; ++i) {
     Double2 v;
     std::memcpy(&v, c + 2 * i, sizeof v);
-    grid &= (v + big2) - big2 == v;
+    grid &= (v + big2[i % 3]) - big2[i % 3] == v;
   }
   return (grid[0] & grid[1]) != 0;
 }
@@ -228,7 +246,7 @@ struct LazyGrid {
   double mag[3];
   intexact::PairInt61 x;
   bool on() {
-    if (state < 0) state = on_grid(c, dmax(mag[0], dmax(mag[1], mag[2]))) ? 1 : 0;
+    if (state < 0) state = on_grid(c, mag) ? 1 : 0;
     return state != 0;
   }
   bool converted() {
@@ -254,6 +272,23 @@ struct LazyGrid {
   if (v < -bound) return -1;
   if (g.state == 1) return sgn(v);  // on the grid, known: no call
   return sign_o3_within(v, g, a, b, cc, d);
+}
+
+// The exact signs of the three points at `pts` against the plane of the triangle at `pl` when
+// that triangle lies in an axis-parallel plane x_k = h (its three points share coordinate k
+// exactly): o3(a, b, c, x) = (x_k - h)·o2(a, b, c; k+1, k+2), so each sign is a comparison times
+// one o2 sign for the three (algorithms/exact/README.md, "A triangle in an axis-parallel
+// plane"). False, and `s` untouched, when the triangle shares no coordinate. Finite input.
+inline bool axis_plane_signs(const double* pl, const double* pts, int s[3]) {
+  const bool on_x = (pl[0] == pl[3]) & (pl[0] == pl[6]), on_y = (pl[1] == pl[4]) & (pl[1] == pl[7]);
+  const bool on_z = (pl[2] == pl[5]) & (pl[2] == pl[8]);
+  if (!(on_x | on_y | on_z)) return false;
+  const int k = on_x ? 0 : (on_y ? 1 : 2);
+  const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
+  const int orient = Filtered::o2(pl, pl + 3, pl + 6, i, j);
+  const double h = pl[k];
+  for (int v = 0; v < 3; ++v) s[v] = orient * ((pts[3 * v + k] > h) - (pts[3 * v + k] < h));
+  return true;
 }
 
 // Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
@@ -303,7 +338,12 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   // axis-parallel plane prove the zeros without arithmetic (their values are computed zeros).
   const bool flat = (ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c);
   int known[6];
-  for (int k = 0; k < 3; ++k) known[k] = flat ? 0 : sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
+  // a value within the bound: on the grid its own sign; off it, against a triangle in an
+  // axis-parallel plane, comparisons and one o2 (no integer conversion)
+  if (flat)
+    known[0] = known[1] = known[2] = 0;
+  else if (!((ps.open & 7u) != 0u && !g.on() && axis_plane_signs(c + 9, c, known)))
+    for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
   if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
     if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
@@ -311,7 +351,10 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   }
   // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
   // the classification reads s2 only when both are proper, so zeros are its exact signs
-  for (int k = 0; k < 3; ++k) known[3 + k] = any1 ? sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k) : 0;
+  if (!any1)
+    known[3] = known[4] = known[5] = 0;
+  else if (!((ps.open & 070u) != 0u && !g.on() && axis_plane_signs(c, c + 9, known + 3)))
+    for (int k = 0; k < 3; ++k) known[3 + k] = sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k);
   const bool any2 = (known[3] | known[4] | known[5]) != 0;
   if (any1 & any2) {  // both triangles proper, the planes distinct
     const bool one1 = one_sided(known), one2 = one_sided(known + 3);

@@ -1495,3 +1495,135 @@ TEST(Handover, PassTwosSharedVertexExitNeedsEveryLane) {
   }
   expect_all_paths_agree(pairs, "one lane among shared vertices");
 }
+
+// ---------------------------------------------------------------- the grid, axis by axis
+
+namespace {
+// Axis k's coordinates are integers X with |X| < 2^15 times 2^q[k], at most `top` in magnitude;
+// point k + 1 holds ±top along k, so that the axis' largest |coordinate| sets q[k] as the test's
+// unit when top >= 2^14.
+TrianglePair grid_per_axis(GenRng& r, const int (&q)[3], const int (&top)[3]) {
+  TrianglePair p;
+  double* c = reinterpret_cast<double*>(&p);
+  for (int v = 0; v < 6; ++v)
+    for (int k = 0; k < 3; ++k) c[3 * v + k] = std::ldexp(static_cast<double>(r.integer(-top[k], top[k])), q[k]);
+  for (int k = 0; k < 3; ++k) c[3 * (k + 1) + k] = std::ldexp(r.coin() ? top[k] : -top[k], q[k]);
+  return p;
+}
+bool pair_on_grid(const double* c) {
+  double mag[3];
+  ex::detail::box_magnitudes(ex::detail::union_of(ex::detail::box_of(c), ex::detail::box_of(c + 9)), mag);
+  return ex::detail::on_grid(c, mag);
+}
+}  // namespace
+
+TEST(GridAxisByAxis, EveryValueIsExactAndEachAxisKeepsItsUnit) {
+  // units from 2^-358 to 2^285 per axis (the test's range), the same or far apart; an axis of
+  // small integers at 2^-358 (below 2^-344: the unit is still 2^-358) and one of zeros
+  GenRng r(41);
+  const int units[][3] = {{0, 0, 0}, {-358, 0, 285}, {285, -358, -100}, {-40, 20, -358}, {100, -200, 7}, {285, 285, 285}};
+  constexpr int kTop = 32767;
+  for (const auto& q : units)
+    for (const auto& top : {std::array{kTop, kTop, kTop}, std::array{kTop, 7, kTop}, std::array{0, kTop, kTop}})
+      for (int trial = 0; trial < 6; ++trial) {
+        const int t[3] = {top[0], top[1], top[2]};
+        const int u[3] = {q[0], t[1] == 7 ? -358 : q[1], q[2]};
+        const TrianglePair p = grid_per_axis(r, u, t);
+        const double* c = reinterpret_cast<const double*>(&p);
+        ASSERT_TRUE(pair_on_grid(c)) << u[0] << " " << u[1] << " " << u[2];
+        // every det3 of four of the six points and every o2 of three, evaluated in double, exact
+        double cc[18];
+        coords(p, cc);
+        each_det3(cc, [&](ex::P a, ex::P b, ex::P x, ex::P d) {
+          ASSERT_EQ(cmp(Q(ex::det3_eval(a, b, a, x, a, d).value), det3_exact(a, b, a, x, a, d)), 0);
+          for (int i = 0; i < 3; ++i)
+            ASSERT_EQ(cmp(Q(ex::det2_value(a, b, x, i, (i + 1) % 3)), det2_exact(a, b, x, i, (i + 1) % 3)), 0);
+        });
+        // half a unit more at any one coordinate is off that axis' grid (a 16-bit test, or one
+        // axis read with another's unit, would take it)
+        for (int pos = 0; pos < 18; ++pos) {
+          const int k = pos % 3;
+          if (t[k] < kTop || pos / 3 == k + 1) continue;  // the axis' largest coordinate stays
+          TrianglePair off = p;
+          reinterpret_cast<double*>(&off)[pos] += std::ldexp(1.0, u[k] - 1);
+          EXPECT_FALSE(pair_on_grid(reinterpret_cast<const double*>(&off))) << pos << " " << u[k];
+        }
+      }
+  // out of range: an axis at 2^300 or more
+  const TrianglePair big = grid_per_axis(r, {0, 286, 0}, {kTop, kTop, kTop});
+  EXPECT_FALSE(pair_on_grid(reinterpret_cast<const double*>(&big)));
+}
+
+TEST(GridAxisByAxis, TouchingPairsScaledPerAxisAreDecidedOnIt) {
+  // every branch case with each axis scaled by its own power of two (an affine map: the relation
+  // is kept): off the one-unit grid, on the grid axis by axis, where the filter's values within
+  // the bound are exact
+  const int scales[][3] = {{-300, 0, 250}, {40, -40, 0}, {0, 200, -200}};
+  std::vector<TrianglePair> pairs;
+  for (const Named& n : branch_cases())
+    for (const auto& s : scales)
+      for (const auto& v : all_orders(n.pair)) {
+        TrianglePair p = v;
+        for (Triangle* t : {&p.t1, &p.t2})
+          for (auto& w : t->v)
+            for (int k = 0; k < 3; ++k) w[k] = std::ldexp(w[k], s[k]);
+        pairs.push_back(p);
+      }
+  int off = 0, grid = 0;  // off the one-unit grid; of those, decided on this one
+  for (const TrianglePair& p : pairs) {
+    double c[18];
+    coords(p, c);
+    if (ex::grid_exact(c, 18)) continue;
+    ++off;
+    ex::detail::Route route = ex::detail::Route::filter;
+    ex::detail::decide<true>(p, false, &route);
+    grid += route == ex::detail::Route::grid;
+  }
+  std::printf("off the one-unit grid %d of %zu, decided on the grid axis by axis %d\n", off, pairs.size(), grid);
+  EXPECT_GT(off, static_cast<int>(pairs.size() / 2));
+  EXPECT_GT(grid, off / 4);
+  expect_all_paths_agree(pairs, "scaled per axis");
+}
+
+// ---------------------------------------------------------------- a triangle in an axis-parallel plane
+
+TEST(AxisPlane, SignsAgainstItAreAComparisonTimesItsOrientation) {
+  // T1 in the plane z = h off every grid (fractions of tenths: spans far above 15 bits, and
+  // above 61 with the 2^-60 moves); T2 with a vertex on the plane inside T1, one ulp below or
+  // above it, or two on it; every order, every axis. With one vertex near the plane only the
+  // plane values are within the bound (G1, G2 are far from zero), so the answers need no
+  // integer determinant; a wrong sign of the orientation or of x_k - h makes the one-ulp pairs
+  // one-sided or crossing the wrong way.
+  const double h = 0.7;
+  const Triangle t1 = tri({0.1, 0.3, h}, {4.1, 0.3, h}, {0.1, 4.3, h});
+  const auto at = [&](double x, double y, double z) { return V(x, y, z); };
+  std::vector<TrianglePair> one_near, edge_on;
+  for (const double px : {1.1, 0.9 + 0x1p-60})
+    for (const double z : {h, std::nextafter(h, -1.0), std::nextafter(h, 2.0)}) {
+      const V p = at(px, 1.3, z);
+      one_near.push_back({t1, tri(p, p + V(1, 0, 1), p + V(0, 1, 2))});      // touches, or crosses, or above
+      one_near.push_back({t1, tri(p, p + V(1, 1, -1), p + V(-1, 0.5, 1))});  // crosses through the vertex
+      edge_on.push_back({t1, tri(p, at(2.1, 0.8, h), p + V(0, 0, 1))});      // an edge on the plane, or near
+    }
+  std::vector<TrianglePair> pairs;
+  for (const auto& b : one_near)
+    for (const auto& v : every_order_and_axis(b)) pairs.push_back(v);
+  ex::intexact::counts() = {};
+  for (const TrianglePair& p : pairs) {
+    ex::overlap(p);
+    ex::relation(p);
+  }
+  const auto& n = ex::intexact::counts();
+  EXPECT_EQ(n.pair3 + n.fast3 + n.middle3 + n.wide3, 0u) << "the plane values took an integer determinant";
+  for (const auto& b : edge_on)
+    for (const auto& v : every_order_and_axis(b)) pairs.push_back(v);
+  expect_all_paths_agree(pairs, "a triangle in an axis-parallel plane");
+}
+
+TEST(OnePair, OneSidedBitsMeetTheirDefinition) {
+  // the filter's one-sided exits in one test: every pair of three-bit masks (+ 2 for a shift
+  // by one, or bit 2 for bit 3, answers some wrongly)
+  for (unsigned pos = 0; pos < 8; ++pos)
+    for (unsigned neg = 0; neg < 8; ++neg)
+      EXPECT_EQ(ex::detail::one_sided_bits(pos, neg), pos == 7u || neg == 7u) << pos << " " << neg;
+}
