@@ -14,11 +14,12 @@
 //   shared    exact coordinate equality of vertices (finite input only): at the overlap level a
 //             shared vertex is a common point; at the relation level the filter's signs decide a
 //             shared vertex (`touch_point`) or a shared edge (`touch_segment`) when certain.
-//   exact     the six plane signs made exact (against a triangle in an axis-parallel plane by
-//             comparisons and one o2; else the grid test once, axis by axis, else the pair's
-//             integer conversion or the per-call filters and the integer engine); crossing and one-sided pairs decided from them with the
-//             pair's bound for G1, G2; coplanar proper pairs in 2-D (coplanar.hpp); degenerate
-//             pairs by the classification.
+//   exact     the six plane signs made exact (the grid test once, axis by axis; off it,
+//             against a triangle in an axis-parallel plane by comparisons and one o2, else the
+//             pair's integer conversion or the per-call filters and the integer engine);
+//             crossing and one-sided pairs decided from them with the pair's bound for G1, G2;
+//             coplanar proper pairs in 2-D (coplanar.hpp); degenerate pairs by the
+//             classification.
 // Each exit and shortcut is proved in algorithms/exact/README.md, "One pair per call" and
 // "Exact signs after the filter".
 #pragma once
