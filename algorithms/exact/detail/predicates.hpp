@@ -200,7 +200,22 @@ struct Filtered {
   }
 };
 
-
+// The exact signs of the three points at `pts` against the plane of the triangle at `pl` when
+// that triangle lies in an axis-parallel plane x_k = h (its three points share coordinate k
+// exactly): o3(a, b, c, x) = (x_k - h)·o2(a, b, c; k+1, k+2), so each sign is a comparison times
+// one o2 sign for the three (algorithms/exact/README.md, "A triangle in an axis-parallel
+// plane"). False, and `s` untouched, when the triangle shares no coordinate. Finite input.
+inline bool axis_plane_signs(const double* pl, const double* pts, int s[3]) {
+  const bool on_x = (pl[0] == pl[3]) & (pl[0] == pl[6]), on_y = (pl[1] == pl[4]) & (pl[1] == pl[7]);
+  const bool on_z = (pl[2] == pl[5]) & (pl[2] == pl[8]);
+  if (!(on_x | on_y | on_z)) return false;
+  const int k = on_x ? 0 : (on_y ? 1 : 2);
+  const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
+  const int orient = Filtered::o2(pl, pl + 3, pl + 6, i, j);
+  const double h = pl[k];
+  for (int v = 0; v < 3; ++v) s[v] = orient * ((pts[3 * v + k] > h) - (pts[3 * v + k] < h));
+  return true;
+}
 
 // ---- the grid test that makes Plain exact ----
 

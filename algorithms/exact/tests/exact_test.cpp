@@ -1469,11 +1469,11 @@ TEST(Handover, TheScalarPassDecidesPassTwosLeftovers) {
 }
 
 // Pass 2 leaves a block at the overlap level when every lane has a shared vertex
-// (algorithms/exact/README.md, "Pass 2's shared-vertex exit"): a lane that has none, at every
-// position of a block of every width among lanes that do, must still get its own answer. The
-// lone lanes are left undecided by pass 1 (a vertex on the other plane, boxes overlapping) and
-// disjoint or touching: an exit taken on `any` lane answers the disjoint ones `yes`, or leaves
-// them to the scalar pass without their values.
+// (algorithms/exact/README.md, "The coplanar pass off the grid (pass 2)", its paragraph on pass 2's
+// shared-vertex exit): a lane that has none, at every position of a block of every width among
+// lanes that do, must still get its own answer. The lone lanes are left undecided by pass 1 (a
+// vertex on the other plane, boxes overlapping) and disjoint or touching: an exit taken on `any`
+// lane answers the disjoint ones `yes`, or leaves them to the scalar pass without their values.
 TEST(Handover, PassTwosSharedVertexExitNeedsEveryLane) {
   const TrianglePair shared{tri({0, 0, 0}, {1, 3, 2}, {2, -1, 1}), kFloor};  // T1's first vertex is T2's
   const std::vector<TrianglePair> others = {
