@@ -74,17 +74,21 @@ inline bool certainly_slanted(const double s[3], double b) {
 // of the other, as in classify.hpp's `crossing`. Evaluated as the kernel's gd_determinants.
 [[gnu::always_inline]] inline void gd_values(const double* c, unsigned pos1, unsigned pos2, double& g1, double& g2) {
   // vertex offsets (p, q, r) with the lone vertex first, per sign pattern; and the flip
-  static constexpr unsigned char kOrder[8][3] = {{0, 3, 6}, {0, 3, 6}, {3, 6, 0}, {6, 0, 3},
-                                                 {6, 0, 3}, {3, 6, 0}, {0, 3, 6}, {0, 3, 6}};
-  static constexpr bool kFlip[8] = {false, false, false, true, false, true, true, true};
-  const unsigned char* o1 = kOrder[pos1];
-  const unsigned char* o2 = kOrder[pos2];
+  // kOrder[pattern][flipped]: (p, q, r), with q and r swapped in the flipped row. Picked by
+  // index rather than `flip ? 2 : 1`, which GCC compiled into a branch per triangle, a coin toss
+  // on crossing pairs.
+  static constexpr unsigned char kOrder[8][2][3] = {
+      {{0, 3, 6}, {0, 6, 3}}, {{0, 3, 6}, {0, 6, 3}}, {{3, 6, 0}, {3, 0, 6}}, {{6, 0, 3}, {6, 3, 0}},
+      {{6, 0, 3}, {6, 3, 0}}, {{3, 6, 0}, {3, 0, 6}}, {{0, 3, 6}, {0, 6, 3}}, {{0, 3, 6}, {0, 6, 3}}};
+  static constexpr unsigned char kFlip[8] = {0, 0, 0, 1, 0, 1, 1, 1};
+  const unsigned char* o1 = kOrder[pos1][kFlip[pos2]];
+  const unsigned char* o2 = kOrder[pos2][kFlip[pos1]];
   const double* p1 = c + o1[0];
   const double* p2 = c + 9 + o2[0];
-  const double* q1 = c + o1[kFlip[pos2] ? 2 : 1];
-  const double* r1 = c + o1[kFlip[pos2] ? 1 : 2];
-  const double* q2 = c + 9 + o2[kFlip[pos1] ? 2 : 1];
-  const double* r2 = c + 9 + o2[kFlip[pos1] ? 1 : 2];
+  const double* q1 = c + o1[1];
+  const double* r1 = c + o1[2];
+  const double* q2 = c + 9 + o2[1];
+  const double* r2 = c + 9 + o2[2];
   const double dx = p2[0] - p1[0], dy = p2[1] - p1[1], dz = p2[2] - p1[2];
   const double ex = q1[0] - p1[0], ey = q1[1] - p1[1], ez = q1[2] - p1[2];
   g1 = ((q2[0] - p1[0]) * (ey * dz - ez * dy) + (q2[1] - p1[1]) * (ez * dx - ex * dz)) +
