@@ -27,6 +27,7 @@
 #include "algorithms/exact/detail/pair_box.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 
@@ -41,27 +42,30 @@ struct PairSigns {
   unsigned open;  // bit k: s1[k] within the bound, bit 3 + k: s2[k] (neither > B nor < -B)
 };
 
-// (x_k - a)·((b - a)×(c - a)) for the three vertices x_k at `pts` and the plane of a b c at `pl`,
-// evaluated as det3_eval evaluates o3 (the kernel's plane_distances, one pair).
-inline void plane_values(const double* pl, const double* pts, double s[3]) {
-  const double ux = pl[3] - pl[0], uy = pl[4] - pl[1], uz = pl[5] - pl[2];
-  const double vx = pl[6] - pl[0], vy = pl[7] - pl[1], vz = pl[8] - pl[2];
-  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+// (x - a)·((b - a)×(c - a)) for the vertices x of one triangle and the plane abc of the other, as
+// det3_eval evaluates o3 (the kernel's plane_distances), both planes at once: lane 0 of s[k] T1's
+// vertex k against π2, lane 1 T2's against π1; two normals for the instructions of one, and each
+// lane the scalar evaluation's operations, so the same values bit for bit.
+inline void plane_values(const double* c, Double2 (&s)[3]) {
+  const auto two = [c](int i) { return Double2{c[9 + i], c[i]}; };  // the plane's point i, lanes T2 | T1
+  const Double2 ax = two(0), ay = two(1), az = two(2);
+  const Double2 ux = two(3) - ax, uy = two(4) - ay, uz = two(5) - az;
+  const Double2 vx = two(6) - ax, vy = two(7) - ay, vz = two(8) - az;
+  const Double2 nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
   for (int k = 0; k < 3; ++k) {
-    const double* x = pts + 3 * k;
-    s[k] = ((x[0] - pl[0]) * nx + (x[1] - pl[1]) * ny) + (x[2] - pl[2]) * nz;
+    const Double2 x = {c[3 * k], c[9 + 3 * k]}, y = {c[3 * k + 1], c[10 + 3 * k]}, z = {c[3 * k + 2], c[11 + 3 * k]};
+    s[k] = ((x - ax) * nx + (y - ay) * ny) + (z - az) * nz;
   }
 }
 
-// Bits of the certainly positive (pos) and certainly negative (neg) values among three.
-inline unsigned above(const double s[3], double b) { return (s[0] > b) | (s[1] > b) << 1 | (s[2] > b) << 2; }
-inline unsigned below(const double s[3], double b) { return (s[0] < -b) | (s[1] < -b) << 1 | (s[2] < -b) << 2; }
-
-// All three certainly positive or all certainly negative (pos, neg: above's and below's bits),
-// as one test: x + 1 has bit 3 exactly when x = 7 (x <= 7). Written so because GCC compiles
-// `(pos == 7) | (neg == 7)` as two branches, and the first one, on which side a one-sided
-// triangle lies, is a coin toss on random input.
-inline bool one_sided_bits(unsigned pos, unsigned neg) { return (((pos + 1u) | (neg + 1u)) & 8u) != 0u; }
+// An interleaved six-bit mask (bit 2k: T1's vertex k, 2k + 1: T2's, as plane_values' lanes)
+// as PairSigns::open orders its bits: T1's three, then T2's.
+inline constexpr auto kSplit = [] {
+  std::array<unsigned char, 64> t{};
+  for (unsigned m = 0; m < 64; ++m)
+    for (unsigned k = 0; k < 3; ++k) t[m] |= ((m >> (2 * k)) & 1u) << k | ((m >> (2 * k + 1)) & 1u) << (3 + k);
+  return t;
+}();
 
 // The planes are certainly not parallel: two distances to one plane differ by more than 3B.
 inline bool certainly_slanted(const double s[3], double b) {
@@ -109,28 +113,36 @@ template <bool kRelation>
     if (boxes_apart(b1, b2) && finite18(c)) return 0;
   const Box u = union_of(b1, b2);
   const double b = bound_of_box(u);
-  ps.bound = b;
-  plane_values(c + 9, c, ps.s1);  // step 1: T1 against π2
-  const unsigned pos1 = above(ps.s1, b), neg1 = below(ps.s1, b);
+  // steps 1 and 2 together (lane 0: T1 against π2, lane 1: T2 against π1)
+  Double2 s[3];
+  plane_values(c, s);
+  const Double2 hi = {b, b}, lo = {-b, -b};
+  const unsigned p[3] = {lt2(hi, s[0]), lt2(hi, s[1]), lt2(hi, s[2])};
+  const unsigned n[3] = {lt2(s[0], lo), lt2(s[1], lo), lt2(s[2], lo)};
+  // overlap level: either triangle one-sided -> disjoint, one branch for both
   if constexpr (!kRelation)
-    if (one_sided_bits(pos1, neg1)) return 0;
-  plane_values(c, c + 9, ps.s2);  // step 2: T2 against π1
-  const unsigned pos2 = above(ps.s2, b), neg2 = below(ps.s2, b);
-  const unsigned open = (~(pos1 | neg1) & 7u) | (~(pos2 | neg2) & 7u) << 3;
-  if constexpr (!kRelation) {
-    if (one_sided_bits(pos2, neg2)) return 0;
-  } else if ((pos1 == 7u) | (neg1 == 7u) | (pos2 == 7u) | (neg2 == 7u)) {
-    // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
-    // proves its triangle proper) and the planes certainly not parallel; else undecided
-    const bool proper = ((pos1 | neg1) != 0u) & ((pos2 | neg2) != 0u);
-    if (proper & (certainly_slanted(ps.s1, b) | certainly_slanted(ps.s2, b))) return 0;
-    ps.open = open, ps.box = u;
+    if (((p[0] & p[1] & p[2]) | (n[0] & n[1] & n[2])) != 0u) return 0;
+  // bits 2k, 2k + 1: s1[k], s2[k] certain and positive (pos) or negative (neg)
+  const unsigned pos = p[0] | p[1] << 2 | p[2] << 4, neg = n[0] | n[1] << 2 | n[2] << 4;
+  const double s1[3] = {s[0][0], s[1][0], s[2][0]}, s2[3] = {s[0][1], s[1][1], s[2][1]};
+  // the values are written to `ps` only when the pair is left undecided
+  const auto undecided = [&](Box box) {
+    ps.bound = b, ps.open = ~kSplit[pos | neg] & 63u, ps.box = box;
+    for (int k = 0; k < 3; ++k) ps.s1[k] = s1[k], ps.s2[k] = s2[k];
     return -1;
+  };
+  if constexpr (kRelation) {
+    const unsigned sp = kSplit[pos], sn = kSplit[neg];  // T1's three bits, then T2's
+    if (((sp & 7u) == 7u) | ((sn & 7u) == 7u) | (sp >= 070u) | (sn >= 070u)) {
+      // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
+      // proves its triangle proper) and the planes certainly not parallel; else undecided
+      const bool proper = ((sp | sn) & 7u) != 0u && ((sp | sn) & 070u) != 0u;
+      if (proper & (certainly_slanted(s1, b) | certainly_slanted(s2, b))) return 0;
+      return undecided(u);
+    }
   }
-  if (open != 0u) {  // a sign within the bound
-    ps.open = open, ps.box = u;
-    return -1;
-  }
+  if ((pos | neg) != 63u) return undecided(u);  // a sign within the bound
+  const unsigned sp = kSplit[pos], pos1 = sp & 7u, pos2 = sp >> 3;
   double g1, g2;
   gd_values(c, pos1, pos2, g1, g2);  // step 3
   // on the larger of G1, G2 (finite here): one branch per exit, where the two comparisons of
@@ -140,8 +152,7 @@ template <bool kRelation>
   if (g < -b) return 1;
   // G1 or G2 within the bound: the box again rather than kept through step 3, where most pairs
   // are decided
-  ps.open = 0u, ps.box = union_of(box_of(c), box_of(c + 9));
-  return -1;
+  return undecided(union_of(box_of(c), box_of(c + 9)));
 }
 
 // The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on

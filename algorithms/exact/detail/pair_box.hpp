@@ -1,12 +1,17 @@
 // The pair's six points two coordinates at a time (SSE2 / NEON registers through GCC's vector
-// extension): the boxes of its triangles, the one-pair filter's bound B from their extents, and
-// the finiteness of its 18 coordinates. Used by one_pair.hpp's filter and `finish`; the bound is
-// proved in algorithms/exact/README.md ("Shared bounds"), the box exit in "One pair per call".
+// extension): the boxes of its triangles, the one-pair filter's bound B from their extents, two
+// comparisons as two bits, and the finiteness of its 18 coordinates.
+// Used by one_pair.hpp's filter and `finish`; the bound is proved in algorithms/exact/README.md
+// ("Shared bounds"), the box exit in "One pair per call".
 #pragma once
 
 #include "algorithms/exact/detail/predicates.hpp"
 
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace tritri::exact::detail {
 
@@ -14,6 +19,24 @@ namespace tritri::exact::detail {
 using Double2 = double __attribute__((vector_size(16)));
 // Two 64-bit integers in one register: the lane masks of Double2 comparisons (all bits set = true).
 using Long2 = long long __attribute__((vector_size(16)));
+
+// Bit k set where a_k < b_k (lt2) or a_k <= b_k (le2), false for NaN as the scalar comparisons:
+// one comparison and one movmskpd on SSE2. GCC's vector extension compiled the mask's lanes out of
+// the register one by one (moves, masks, negations) before it would take their bits.
+inline unsigned lt2(Double2 a, Double2 b) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_pd(_mm_cmplt_pd(reinterpret_cast<__m128d>(a), reinterpret_cast<__m128d>(b))));
+#else
+  return static_cast<unsigned>(a[0] < b[0]) | static_cast<unsigned>(a[1] < b[1]) << 1;
+#endif
+}
+inline unsigned le2(Double2 a, Double2 b) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_pd(_mm_cmple_pd(reinterpret_cast<__m128d>(a), reinterpret_cast<__m128d>(b))));
+#else
+  return static_cast<unsigned>(a[0] <= b[0]) | static_cast<unsigned>(a[1] <= b[1]) << 1;
+#endif
+}
 
 // The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
 // and maxima by `<` / `>`: an unordered comparison keeps the running value).
@@ -49,10 +72,12 @@ inline Box union_of(const Box& a, const Box& b) {
 // unless a NaN was skipped; a NaN makes every value it enters NaN. Either way no comparison with
 // B below is true (algorithms/exact/README.md, "One pair per call").
 inline double bound_of_box(const Box& u) {
-  const Double2 e = u.hi - u.lo;
-  const double ex = e[0], ey = e[1], ez = u.hi_z - u.lo_z;
-  if (!(ex <= bound::kMax3 && ey <= bound::kMax3 && ez <= bound::kMax3)) return __builtin_inf();
-  return bound::kRel3 * dmax(ex, bound::kMin3) * dmax(ey, bound::kMin3) * dmax(ez, bound::kMin3) + bound::kAbs3;
+  const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3}, least = {bound::kMin3, bound::kMin3};
+  const double ez = u.hi_z - u.lo_z;
+  // `<=` is false for NaN: a NaN extent fails as before; all three tested in one branch
+  if ((le2(e, most) | static_cast<unsigned>(ez <= bound::kMax3) << 2) != 7u) return __builtin_inf();
+  const Double2 m = e > least ? e : least;  // dmax(e, kMin3) for x and y at once (e finite here)
+  return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
 }
 
 // The largest |coordinate| per axis of a box of finite coordinates: max(hi, -lo), exact.
@@ -64,21 +89,19 @@ inline void box_magnitudes(const Box& u, double (&m)[3]) {
 
 // The boxes are disjoint along some axis (comparisons only, hence exact for finite coordinates).
 inline bool boxes_apart(const Box& a, const Box& b) {
-  const Long2 apart = (a.hi < b.lo) | (b.hi < a.lo);
-  return ((apart[0] | apart[1]) != 0) | (a.hi_z < b.lo_z) | (b.hi_z < a.lo_z);
-}
-
-// The 18 coordinates as 9 Double2 (in memory order: the pairing does not matter to the callers).
-inline void load9(const double* c, Double2 (&v)[9]) {
-  for (int i = 0; i < 9; ++i) std::memcpy(&v[i], c + 2 * i, sizeof v[i]);
+  // z of both boxes in one register, so that the six comparisons make one mask and one branch
+  const Double2 hz = {a.hi_z, b.hi_z}, lz = {b.lo_z, a.lo_z};
+  return (lt2(a.hi, b.lo) | lt2(b.hi, a.lo) | lt2(hz, lz)) != 0u;
 }
 
 // All 18 coordinates finite: x - x is 0 for finite x and NaN otherwise, and a sum with a NaN is NaN.
 inline bool finite18(const double* c) {
-  Double2 v[9];
-  load9(c, v);
-  Double2 z = v[0] - v[0];
-  for (int i = 1; i < 9; ++i) z += v[i] - v[i];
+  Double2 z = {0.0, 0.0};
+  for (int i = 0; i < 9; ++i) {  // one register at a time: an array of nine went through the stack
+    Double2 v;
+    std::memcpy(&v, c + 2 * i, sizeof v);
+    z += v - v;
+  }
   return (z[0] + z[1]) == 0.0;
 }
 

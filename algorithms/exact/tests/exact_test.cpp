@@ -1418,11 +1418,12 @@ TEST(Handover, PassTwoHandsOverTheFiltersValues) {
           ASSERT_LT(slot, count) << "a slot, not an index";
           const double* c = pairs[pending[slot]].t1[0].data();
           const d::Box box = d::union_of(d::box_of(c), d::box_of(c + 9));
-          double s1[3], s2[3];
-          d::plane_values(c + 9, c, s1);
-          d::plane_values(c, c + 9, s2);
+          d::Double2 sv[3];
+          d::plane_values(c, sv);
+          const double s1[3] = {sv[0][0], sv[1][0], sv[2][0]}, s2[3] = {sv[0][1], sv[1][1], sv[2][1]};
           const double b = d::bound_of_box(box);
-          const unsigned open = (~(d::above(s1, b) | d::below(s1, b)) & 7u) | (~(d::above(s2, b) | d::below(s2, b)) & 7u) << 3;
+          unsigned open = 0;
+          for (int k = 0; k < 3; ++k) open |= (!(s1[k] > b) & !(s1[k] < -b)) << k | (!(s2[k] > b) & !(s2[k] < -b)) << (3 + k);
           ASSERT_EQ(h.bound[slot], b) << slot;
           for (int k = 0; k < 3; ++k) {
             ASSERT_EQ(h.s1[k][slot], s1[k]) << slot << " " << k;
@@ -1620,10 +1621,90 @@ TEST(AxisPlane, SignsAgainstItAreAComparisonTimesItsOrientation) {
   expect_all_paths_agree(pairs, "a triangle in an axis-parallel plane");
 }
 
-TEST(OnePair, OneSidedBitsMeetTheirDefinition) {
-  // the filter's one-sided exits in one test: every pair of three-bit masks (+ 2 for a shift
-  // by one, or bit 2 for bit 3, answers some wrongly)
-  for (unsigned pos = 0; pos < 8; ++pos)
-    for (unsigned neg = 0; neg < 8; ++neg)
-      EXPECT_EQ(ex::detail::one_sided_bits(pos, neg), pos == 7u || neg == 7u) << pos << " " << neg;
+TEST(OnePair, TwoLaneComparisonsMeetTheScalarOnes) {
+  // lt2 / le2 (two comparisons per movmskpd), boxes_apart (six comparisons in one mask) and
+  // bound_of_box (the three extents in one branch) against the scalar comparisons they replace,
+  // on values at, beside and across the limits, signed zeros, infinities and NaN (one operand's
+  // lanes exchanged in lt2, or `<` for `<=` in le2, each fail)
+  namespace d = ex::detail;
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double b = 0x1.8p-3, b_up = std::nextafter(b, 1.0), b_down = std::nextafter(b, 0.0);
+  const double v[] = {0.0, -0.0, b, -b, b_up, -b_up, b_down, -b_down, 1.0, -1.0, inf, -inf, nan};
+  for (double x : v)
+    for (double y : v) {
+      const d::Double2 xy = {x, y}, bb = {b, b};
+      EXPECT_EQ(d::lt2(xy, bb), (x < b) | (y < b) << 1) << x << " " << y;
+      EXPECT_EQ(d::lt2(bb, xy), (b < x) | (b < y) << 1) << x << " " << y;
+      EXPECT_EQ(d::le2(xy, bb), (x <= b) | (y <= b) << 1) << x << " " << y;
+    }
+  // boxes: each of the twelve bounds from a few values with ties and NaN
+  const double w[] = {-1.0, 0.0, -0.0, 1.0, 2.0, nan};
+  std::uint64_t state = 12345;
+  const auto pick = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return w[(state >> 33) % 6];
+  };
+  for (int i = 0; i < 200000; ++i) {
+    double lo1[3], hi1[3], lo2[3], hi2[3];
+    for (int k = 0; k < 3; ++k) lo1[k] = pick(), hi1[k] = pick(), lo2[k] = pick(), hi2[k] = pick();
+    const d::Box a{{lo1[0], lo1[1]}, {hi1[0], hi1[1]}, lo1[2], hi1[2]};
+    const d::Box c{{lo2[0], lo2[1]}, {hi2[0], hi2[1]}, lo2[2], hi2[2]};
+    bool apart = false;
+    for (int k = 0; k < 3; ++k) apart = apart || hi1[k] < lo2[k] || hi2[k] < lo1[k];
+    ASSERT_EQ(d::boxes_apart(a, c), apart) << i;
+  }
+  // the bound: +inf unless every extent is at most kMax3 (NaN and inf extents included), else
+  // the product as before, bit for bit
+  const double e[] = {0.0, 0x1p-400, ex::bound::kMin3, 1.0, 0x1.8p7, ex::bound::kMax3,
+                      std::nextafter(ex::bound::kMax3, inf), inf, nan};
+  for (double ex_ : e)
+    for (double ey : e)
+      for (double ez : e) {
+        const d::Box u{{0.0, 0.0}, {ex_, ey}, 0.0, ez};
+        double want = inf;
+        if (ex_ <= ex::bound::kMax3 && ey <= ex::bound::kMax3 && ez <= ex::bound::kMax3)
+          want = ex::bound::kRel3 * ex::dmax(ex_, ex::bound::kMin3) * ex::dmax(ey, ex::bound::kMin3) *
+                     ex::dmax(ez, ex::bound::kMin3) +
+                 ex::bound::kAbs3;
+        EXPECT_EQ(d::bound_of_box(u), want) << ex_ << " " << ey << " " << ez;
+      }
+}
+
+TEST(OnePair, BothPlanesInTwoLanesAreTheScalarValues) {
+  // plane_values' lanes against the scalar evaluation (det3_eval's order) of each plane, bit for
+  // bit, on random, small-integer (touching, coplanar), perturbed and wide pairs at scales 2^±300 and
+  // non-finite or huge coordinates; kSplit against its
+  // definition (lanes exchanged in plane_values, or T1's and T2's bits in kSplit, each fail)
+  namespace d = ex::detail;
+  const auto scalar = [](const double* pl, const double* x) {
+    const double ux = pl[3] - pl[0], uy = pl[4] - pl[1], uz = pl[5] - pl[2];
+    const double vx = pl[6] - pl[0], vy = pl[7] - pl[1], vz = pl[8] - pl[2];
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    return ((x[0] - pl[0]) * nx + (x[1] - pl[1]) * ny) + (x[2] - pl[2]) * nz;
+  };
+  GenRng r(17);
+  std::vector<TrianglePair> pairs;
+  for (int i = 0; i < 3000; ++i) pairs.push_back(i % 3 ? random_pair(r) : perturbed(small_int_pair(r), r));
+  for (int i = 0; i < 1000; ++i) pairs.push_back(scaled(wide_pair(r), static_cast<int>(r.integer(-300, 300))));
+  const double odd[] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 0x1p1000};
+  for (int i = 0; i < 18 * 3; ++i) {
+    TrianglePair p = pairs[static_cast<std::size_t>(i)];
+    p.t1[0].data()[i % 18] = odd[i / 18];
+    pairs.push_back(p);
+  }
+  for (const TrianglePair& p : pairs) {
+    const double* c = p.t1[0].data();
+    d::Double2 s[3];
+    d::plane_values(c, s);
+    for (int k = 0; k < 3; ++k) {
+      const double s1 = scalar(c + 9, c + 3 * k), s2 = scalar(c, c + 9 + 3 * k);
+      EXPECT_TRUE(std::memcmp(&s1, &s[k][0], 8) == 0 || (s1 != s1 && s[k][0] != s[k][0])) << k;
+      EXPECT_TRUE(std::memcmp(&s2, &s[k][1], 8) == 0 || (s2 != s2 && s[k][1] != s[k][1])) << k;
+    }
+  }
+  for (unsigned m = 0; m < 64; ++m) {
+    unsigned want = 0;
+    for (unsigned k = 0; k < 3; ++k) want |= ((m >> (2 * k)) & 1u) << k | ((m >> (2 * k + 1)) & 1u) << (3 + k);
+    EXPECT_EQ(d::kSplit[m], want) << m;
+  }
 }
