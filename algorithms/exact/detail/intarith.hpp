@@ -27,6 +27,7 @@ struct Counts {
   std::uint64_t fast3 = 0, middle3 = 0, wide3 = 0, fast2 = 0, middle2 = 0, wide2 = 0, structural = 0;
   std::uint64_t pair3 = 0;  // det3 signs from a pair's shared conversion (det3_pair_sign)
   std::uint64_t pair2 = 0;  // det2 signs from it (det2_pair_sign)
+  std::uint64_t pair40 = 0;  // det3 signs from a pair's 40-bit conversion (det3_pair40_sign)
 };
 inline Counts& counts() {
   thread_local Counts c;

@@ -128,6 +128,64 @@ inline int det3_pair_sign(const PairInt61& p, const int (&i)[6]) {
   return det3_rows_sign(d);
 }
 
+// ---------------------------------------------------------------- the 40-bit tier
+
+// A pair whose every coordinate along axis k is a multiple of 2^q_k, q_k = e_k - 39 for
+// 2^e_k <= m_k < 2^(e_k+1) (m_k: the axis' largest |coordinate|, raised to 2^-1022 if below,
+// below 2^1011), loaded into `out` as the integers x / 2^q_k, each below 2^40 in magnitude: one
+// magic-number pass gives the test and the integers (y = x + C_k, C_k = 1.5·2^(q_k+52), lands in
+// C_k's binade, where the spacing is 2^q_k). False when some coordinate is off its axis' unit or
+// an axis' maximum is out of range; `out` is then unusable. Proof: algorithms/exact/README.md,
+// "Zeros off the grid, 40 bits per axis".
+inline bool pair_to_int40(const double* c, const double (&mag)[3], PairInt61& out) {
+  using D2 = double __attribute__((vector_size(16)));
+  using L2 = long long __attribute__((vector_size(16)));
+  const double top = mag[0] > mag[1] ? mag[0] : mag[1];
+  if (!((top > mag[2] ? top : mag[2]) < 0x1p1011)) return false;
+  const D2 least = {0x1p-1022, 0x1p-1022};  // normal: its exponent field is e_k
+  D2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]};
+  mxy = mxy > least ? mxy : least;
+  mz = mz > least ? mz : least;
+  // C_k's bits: m_k's exponent field plus 13 (q_k + 52 = e_k + 13), and the bit below the leading one
+  const L2 exponent = {0x7ff0000000000000ll, 0x7ff0000000000000ll}, up = {13ll << 52, 13ll << 52},
+           half = {1ll << 51, 1ll << 51};
+  const L2 cxy = ((reinterpret_cast<L2>(mxy) & exponent) + up) | half;
+  const L2 cz = ((reinterpret_cast<L2>(mz) & exponent) + up) | half;
+  const L2 big2[3] = {cxy, L2{cz[0], cxy[0]}, L2{cxy[1], cz[0]}};  // x y | z x | y z, repeated
+  L2 ok = {-1, -1};
+  for (int i = 8; i >= 0; --i) {  // T2's last coordinates first: see the exit below
+    D2 v;
+    std::memcpy(&v, c + 2 * i, sizeof v);
+    const D2 big = reinterpret_cast<D2>(big2[i % 3]);
+    const D2 y = v + big;
+    ok &= (y - big) == v;
+    const L2 n = reinterpret_cast<L2>(y) - big2[i % 3];  // (y - C_k) / 2^q_k: one binade
+    out.x[(2 * i) % 3][(2 * i) / 3] = n[0];
+    out.x[(2 * i + 1) % 3][(2 * i + 1) / 3] = n[1];
+    // pairs off the unit are mostly off it at the last two coordinates (random doubles: their
+    // low 13 bits; a touching family's constructed point): they leave before the other eight
+    if (i == 8 && (ok[0] & ok[1]) == 0) return false;
+  }
+  return (ok[0] & ok[1]) != 0;
+}
+
+// sign det[P1-P0, P3-P2, P5-P4] for a pair loaded by pair_to_int40 (every |X| < 2^40): the
+// differences below 2^41, a cofactor below 2^83, each term below 2^124 and their sum below 2^126,
+// all in __int128.
+inline int det3_pair40_sign(const PairInt61& p, const int (&i)[6]) {
+  ++counts().pair40;
+  std::int64_t d[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) d[r][k] = p.x[k][i[2 * r + 1]] - p.x[k][i[2 * r]];
+  i128 acc = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    const i128 m = static_cast<i128>(d[1][a]) * d[2][b] - static_cast<i128>(d[1][b]) * d[2][a];
+    acc += m * d[0][k];
+  }
+  return (acc > 0) - (acc < 0);
+}
+
 // sign o2(a, b, v; i, j) = (b-a)_i (v-a)_j - (b-a)_j (v-a)_i for the points with indices a, b, v
 // (0..5) of a converted pair: every |X| < 2^61, so the differences are below 2^62 (int64), the
 // products below 2^124 and their difference below 2^125 (__int128). A positive scale per axis

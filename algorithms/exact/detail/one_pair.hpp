@@ -249,12 +249,10 @@ inline bool on_grid(const double* c, const double (&mag)[3]) {
 }
 
 // The pair's grid test and its shared integer conversion, each evaluated at most once per pair
-// and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes).
-// The largest |coordinate| per axis comes from the filter's box (finite input: exact).
+// and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes,
+// 2 yes in 40 bits). The largest |coordinate| per axis comes from the filter's box (finite: exact).
 struct LazyGrid {
-  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) {  // x unset until needed
-    box_magnitudes(box, mag);
-  }
+  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) { box_magnitudes(box, mag); }
   const double* c;
   int state;
   int ints = -1;
@@ -264,8 +262,8 @@ struct LazyGrid {
     if (state < 0) state = on_grid(c, mag) ? 1 : 0;
     return state != 0;
   }
-  bool converted() {
-    if (ints < 0) ints = intexact::pair_to_int61(c, mag, x) ? 1 : 0;
+  bool converted() {  // x unset until needed; 2: every |X| < 2^40 (pair_to_int40), 1: below 2^61
+    if (ints < 0) ints = intexact::pair_to_int40(c, mag, x) ? 2 : intexact::pair_to_int61(c, mag, x) ? 1 : 0;
     return ints != 0;
   }
 };
@@ -274,12 +272,13 @@ struct LazyGrid {
 // a value `v` of it evaluated in det3_eval's shape and the pair's bound, valid for every such
 // value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
 // the grid the value is exact ("The grid case"); else the pair's shared integer conversion when
-// every axis fits ("Zeros off the grid"); else the per-call filters and the integer engine.
-// (The certain case and a grid already known inline, the rest out of line: most calls are one
-// of those.)
+// every axis fits, 40 bits in __int128 first ("Zeros off the grid, 40 bits per axis"), else 61
+// ("Zeros off the grid"); else the per-call filters and the integer engine. (The certain case and
+// a grid already known inline, the rest out of line: most calls are one of those.)
 [[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
   if (g.on()) return sgn(v);  // the first value within the bound tests the grid
-  if (g.converted()) return intexact::det3_pair_sign(g.x, {a, b, a, cc, a, d});
+  if (const int i[6] = {a, b, a, cc, a, d}; g.converted())
+    return g.ints == 2 ? intexact::det3_pair40_sign(g.x, i) : intexact::det3_pair_sign(g.x, i);
   return Filtered::o3(g.c + 3 * a, g.c + 3 * b, g.c + 3 * cc, g.c + 3 * d);
 }
 [[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, int a, int b, int cc, int d) {

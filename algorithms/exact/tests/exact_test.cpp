@@ -916,7 +916,177 @@ TEST(ZerosOffTheGrid, OnePairPathAgreesWithTheOracle) {
   }
   ex::intexact::counts() = {};
   expect_all_paths_agree(pairs, "zeros off the grid");
-  EXPECT_GT(ex::intexact::counts().pair3, 1000u);
+  EXPECT_GT(ex::intexact::counts().pair3 + ex::intexact::counts().pair40, 1000u);
+}
+
+// ---------------------------------------------------------------- zeros off the grid, 40 bits per axis
+
+namespace {
+
+// Six points of integers below 2^36 (some points small-coefficient combinations of others, so
+// exact zeros and touching configurations occur; combinations stay below 2^40), axis k scaled by
+// 2^scale[k]; sometimes one coordinate moved by one ulp or half a unit.
+TrianglePair int40_pair(GenRng& r, const int (&scale)[3]) {
+  const std::int64_t m = std::int64_t{1} << static_cast<int>(r.integer(1, 36));
+  auto pt = [&] {
+    return V(static_cast<double>(r.integer(-m, m)), static_cast<double>(r.integer(-m, m)),
+             static_cast<double>(r.integer(-m, m)));
+  };
+  V q[6] = {pt(), pt(), pt(), pt(), pt(), pt()};
+  for (int k = 3; k < 6; ++k)
+    if (r.integer(0, 2) != 0) {
+      const V x = q[r.integer(0, 2)], y = q[r.integer(0, 2)], z = q[r.integer(0, 2)];
+      q[k] = x + static_cast<double>(r.integer(-3, 3)) * (y - x) + static_cast<double>(r.integer(-3, 3)) * (z - x);
+    }
+  TrianglePair p;
+  for (int v = 0; v < 6; ++v) {
+    V w = q[v];
+    for (int k = 0; k < 3; ++k) {
+      w[k] = std::ldexp(w[k], scale[k]);
+      if (w[k] == 0.0 && r.coin()) w[k] = -0.0;
+    }
+    (v < 3 ? p.t1[v] : p.t2[v - 3]) = w;
+  }
+  const int kind = static_cast<int>(r.integer(0, 9));
+  double& x = (r.coin() ? p.t1 : p.t2)[r.integer(0, 2)][r.integer(0, 2)];
+  if (kind == 0) x = std::nextafter(x, r.coin() ? INFINITY : -INFINITY);
+  if (kind == 1) x += std::ldexp(0.5, scale[0]);
+  return p;
+}
+
+// The tier's definition, written again with ilogb and ldexp: per axis, m the largest |x| (below
+// 2^1011), e = max(ilogb(m), -1022), and every x / 2^(e-39) an integer; `x` gets them.
+bool int40_reference(const double (&c)[18], std::int64_t (&x)[3][6]) {
+  for (int k = 0; k < 3; ++k) {
+    double m = 0.0;
+    for (int v = 0; v < 6; ++v) m = std::max(m, std::fabs(c[3 * v + k]));
+    if (!(m < std::ldexp(1.0, 1011))) return false;
+    const int e = m == 0.0 ? -1022 : std::max(std::ilogb(m), -1022);
+    for (int v = 0; v < 6; ++v) {
+      const double s = std::ldexp(c[3 * v + k], 39 - e);  // may underflow: scaled back below
+      if (s != std::trunc(s) || std::fabs(s) >= 0x1p40 || std::ldexp(s, e - 39) != c[3 * v + k]) return false;
+      x[k][v] = static_cast<std::int64_t>(s);
+    }
+  }
+  return true;
+}
+
+bool int40_of(const double (&c)[18], ex::intexact::PairInt61& x) {
+  double mag[3] = {0, 0, 0};
+  for (int v = 0; v < 6; ++v)
+    for (int k = 0; k < 3; ++k) mag[k] = std::max(mag[k], std::fabs(c[3 * v + k]));
+  return ex::intexact::pair_to_int40(c, mag, x);
+}
+
+}  // namespace
+
+TEST(ZerosOffTheGrid40, TestIntegersAndEveryDet3AgreeWithGmp) {
+  // per axis its own scale, 2^-1074 to 2^1000 (the last refused: above 2^1011), mixed
+  GenRng r(40);
+  const int scales[] = {-1074, -1060, -1040, -1000, -600, -40, -20, 0, 7, 300, 900, 960, 1000};
+  int accepted = 0, zeros = 0;
+  for (int trial = 0; trial < 2500; ++trial) {
+    int sc[3];
+    for (int& s : sc) s = scales[r.integer(0, std::size(scales) - 1)];
+    if (trial % 3 == 0) sc[1] = sc[2] = sc[0];
+    const TrianglePair p = int40_pair(r, sc);
+    double c[18];
+    coords(p, c);
+    ex::intexact::PairInt61 x;
+    std::int64_t want[3][6];
+    const bool ok = int40_of(c, x);
+    ASSERT_EQ(ok, int40_reference(c, want)) << trial;
+    if (!ok) continue;
+    ++accepted;
+    for (int k = 0; k < 3; ++k)
+      for (int v = 0; v < 6; ++v) ASSERT_EQ(x.x[k][v], want[k][v]) << trial;
+    each_det3(c, [&](const double* a, const double* b, const double* cc, const double* d) {
+      const double* q[6] = {a, b, a, cc, a, d};
+      const int g = ex::expansion::det3_sign_gmp(q);
+      zeros += g == 0;
+      const int i[6] = {static_cast<int>(a - c) / 3, static_cast<int>(b - c) / 3, static_cast<int>(a - c) / 3,
+                        static_cast<int>(cc - c) / 3, static_cast<int>(a - c) / 3, static_cast<int>(d - c) / 3};
+      ASSERT_EQ(ex::intexact::det3_pair40_sign(x, i), g) << trial;
+    });
+  }
+  EXPECT_GT(accepted, 1000);
+  EXPECT_GT(zeros, 50000);
+}
+
+TEST(ZerosOffTheGrid40, TheEdgesOfTheRangeAreExact) {
+  // an axis holding -(2^40 - 1) and 2^40 - 1 units with the largest determinant they allow,
+  // accepted and exact; half a unit more (a 41-bit span) refused; the exponent limits
+  const double big = 0x1p40 - 1.0;
+  for (const int s : {-1061, -1022, -500, 0, 500, 971}) {
+    const double u = std::ldexp(1.0, s);
+    double c[18] = {-big * u, -big * u, -big * u, big * u, -big * u, -big * u, -big * u, big * u, -big * u,
+                    -big * u, -big * u, big * u,  big * u, big * u,  big * u,  u,       -u,      0.0};
+    ex::intexact::PairInt61 x;
+    std::int64_t want[3][6];
+    ASSERT_TRUE(int40_of(c, x)) << s;
+    ASSERT_TRUE(int40_reference(c, want)) << s;
+    EXPECT_EQ(x.x[0][1], static_cast<std::int64_t>(big)) << s;
+    each_det3(c, [&](const double* a, const double* b, const double* cc, const double* d) {
+      const double* q[6] = {a, b, a, cc, a, d};
+      const int i[6] = {static_cast<int>(a - c) / 3, static_cast<int>(b - c) / 3, static_cast<int>(a - c) / 3,
+                        static_cast<int>(cc - c) / 3, static_cast<int>(a - c) / 3, static_cast<int>(d - c) / 3};
+      ASSERT_EQ(ex::intexact::det3_pair40_sign(x, i), ex::expansion::det3_sign_gmp(q)) << s;
+    });
+    c[15] = 0.5 * u;  // half a unit: representable, off the unit
+    EXPECT_FALSE(int40_of(c, x)) << s;
+    EXPECT_FALSE(int40_reference(c, want)) << s;
+  }
+  // 2^1011 on an axis: no C_k; just below it, on its unit 2^971: accepted
+  double c[18] = {};
+  c[0] = 0x1p1011;
+  ex::intexact::PairInt61 x;
+  EXPECT_FALSE(int40_of(c, x));
+  c[0] = std::ldexp(0x1p40 - 1.0, 971);
+  c[3] = std::ldexp(-1.0, 971);
+  EXPECT_TRUE(int40_of(c, x));
+  EXPECT_EQ(x.x[0][0], static_cast<std::int64_t>(0x1p40 - 1.0));
+  EXPECT_EQ(x.x[0][1], -1);
+  // subnormals: an axis below 2^-1022 has the unit 2^-1061; signed zeros give 0
+  c[0] = std::ldexp(3.0, -1061), c[3] = -std::ldexp(1.0, -1061), c[6] = -0.0;
+  ASSERT_TRUE(int40_of(c, x));
+  EXPECT_EQ(x.x[0][0], 3);
+  EXPECT_EQ(x.x[0][1], -1);
+  EXPECT_EQ(x.x[0][2], 0);
+  c[9] = std::numeric_limits<double>::denorm_min();  // off that unit: refused
+  EXPECT_FALSE(int40_of(c, x));
+  c[9] = 0.0, c[0] = 0x1p-1020;  // 2^-1020 beside 2^-1061: 42 bits, refused
+  EXPECT_FALSE(int40_of(c, x));
+}
+
+TEST(ZerosOffTheGrid40, TouchingPairsOnSuchGridsAgreeWithTheOracle) {
+  // pairs from int40_pair, and box_stack's kind: a triangle in z = h, the other in x = g with a
+  // vertex or an edge on the first one's edge, coordinates multiples of 2^-20 near 1.25 (off the
+  // 15-bit grid); every path against the oracle, and the tier must decide some signs
+  GenRng r(41);
+  std::vector<TrianglePair> pairs;
+  const int scales[] = {-1074, -1000, -40, -20, 0, 300, 960};
+  for (int trial = 0; trial < 800; ++trial) {
+    int sc[3];
+    for (int& s : sc) s = scales[r.integer(0, std::size(scales) - 1)];
+    pairs.push_back(int40_pair(r, sc));
+  }
+  for (int trial = 0; trial < 400; ++trial) {
+    auto at = [&](double base) { return base + std::ldexp(static_cast<double>(r.integer(-4096, 4096)), -20); };
+    const double h = at(1.25);
+    TrianglePair p;
+    p.t1 = tri({at(0.1), at(0.1), h}, {at(0.9), at(0.1), h}, {at(0.1), at(0.9), h});
+    const V e0 = p.t1[0], e1 = p.t1[r.integer(1, 2)];
+    const double t = std::ldexp(static_cast<double>(r.integer(0, 16)), -4);
+    const V on = e0 + t * (e1 - e0);  // on T1's edge when exact (checked by the oracle anyway)
+    const double g = on[0];
+    p.t2 = tri({g, on[1], on[2] + (trial % 3 == 0 ? std::ldexp(1.0, -20) : 0.0)}, {g, at(0.7), at(1.6)},
+               {g, at(0.2), at(1.6)});
+    if (trial % 2) std::swap(p.t1, p.t2);
+    pairs.push_back(p);
+  }
+  ex::intexact::counts() = {};
+  expect_all_paths_agree(pairs, "zeros off the grid, 40 bits");
+  EXPECT_GT(ex::intexact::counts().pair40, 500u);
 }
 
 // ---------------------------------------------------------------- the paths of the batch
@@ -1305,7 +1475,7 @@ TEST(CoplanarOnePair, FlatPairsAreDecidedIn2DAndOnlyThey) {
     static_cast<void>(ex::overlap(p));
     static_cast<void>(ex::relation(p));
   }
-  EXPECT_EQ(ex::intexact::counts().pair3, 0u);
+  EXPECT_EQ(ex::intexact::counts().pair3 + ex::intexact::counts().pair40, 0u);
   EXPECT_EQ(ex::intexact::counts().pair2 + ex::intexact::counts().fast2, 0u);
   expect_all_paths_agree(flat, "flat at 2^-20");
 }
@@ -1615,7 +1785,7 @@ TEST(AxisPlane, SignsAgainstItAreAComparisonTimesItsOrientation) {
     ex::relation(p);
   }
   const auto& n = ex::intexact::counts();
-  EXPECT_EQ(n.pair3 + n.fast3 + n.middle3 + n.wide3, 0u) << "the plane values took an integer determinant";
+  EXPECT_EQ(n.pair3 + n.pair40 + n.fast3 + n.middle3 + n.wide3, 0u) << "the plane values took an integer determinant";
   for (const auto& b : edge_on)
     for (const auto& v : every_order_and_axis(b)) pairs.push_back(v);
   expect_all_paths_agree(pairs, "a triangle in an axis-parallel plane");
