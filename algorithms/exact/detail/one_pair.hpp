@@ -42,22 +42,6 @@ struct PairSigns {
   unsigned open;  // bit k: s1[k] within the bound, bit 3 + k: s2[k] (neither > B nor < -B)
 };
 
-// (x - a)·((b - a)×(c - a)) for the vertices x of one triangle and the plane abc of the other, as
-// det3_eval evaluates o3 (the kernel's plane_distances), both planes at once: lane 0 of s[k] T1's
-// vertex k against π2, lane 1 T2's against π1; two normals for the instructions of one, and each
-// lane the scalar evaluation's operations, so the same values bit for bit.
-inline void plane_values(const double* c, Double2 (&s)[3]) {
-  const auto two = [c](int i) { return Double2{c[9 + i], c[i]}; };  // the plane's point i, lanes T2 | T1
-  const Double2 ax = two(0), ay = two(1), az = two(2);
-  const Double2 ux = two(3) - ax, uy = two(4) - ay, uz = two(5) - az;
-  const Double2 vx = two(6) - ax, vy = two(7) - ay, vz = two(8) - az;
-  const Double2 nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  for (int k = 0; k < 3; ++k) {
-    const Double2 x = {c[3 * k], c[9 + 3 * k]}, y = {c[3 * k + 1], c[10 + 3 * k]}, z = {c[3 * k + 2], c[11 + 3 * k]};
-    s[k] = ((x - ax) * nx + (y - ay) * ny) + (z - az) * nz;
-  }
-}
-
 // An interleaved six-bit mask (bit 2k: T1's vertex k, 2k + 1: T2's, as plane_values' lanes)
 // as PairSigns::open orders its bits: T1's three, then T2's.
 inline constexpr auto kSplit = [] {
@@ -72,34 +56,40 @@ inline bool certainly_slanted(const double s[3], double b) {
   return (std::fabs(s[1] - s[0]) > 3.0 * b) | (std::fabs(s[2] - s[0]) > 3.0 * b);
 }
 
-// Guigue–Devillers' G1 = [p1,q1,p2,q2] and G2 = [p1,r1,r2,p2] on six certain non-zero signs,
-// `pos1` / `pos2` the bits of the positive ones (each in 1..6): the lone vertex is the one whose
-// sign differs from the other two, and a triangle's flip (its lone vertex negative) swaps q and r
-// of the other, as in classify.hpp's `crossing`. Evaluated as the kernel's gd_determinants.
-[[gnu::always_inline]] inline void gd_values(const double* c, unsigned pos1, unsigned pos2, double& g1, double& g2) {
-  // vertex offsets (p, q, r) with the lone vertex first, per sign pattern; and the flip
-  // kOrder[pattern][flipped]: (p, q, r), with q and r swapped in the flipped row. Picked by
-  // index rather than `flip ? 2 : 1`, which GCC compiled into a branch per triangle, a coin toss
-  // on crossing pairs.
-  static constexpr unsigned char kOrder[8][2][3] = {
+// The canonical order's six points for the sign bits `sp` (kSplit's order: T1's positive bits,
+// then T2's, each in 1..6): kPick[sp] = (p1, q1, r1, p2, q2, r2) as coordinate offsets. The lone
+// vertex is the one whose sign differs from the other two, and a triangle's flip (its lone
+// vertex negative) swaps q and r of the other, as in classify.hpp's `crossing`. One table row per
+// pair: the per-triangle rows and flip bits had cost about ten address computations.
+inline constexpr auto kPick = [] {
+  // (p, q, r) with the lone vertex first, per sign pattern: unflipped, then with q and r swapped
+  constexpr unsigned char kOrder[8][2][3] = {
       {{0, 3, 6}, {0, 6, 3}}, {{0, 3, 6}, {0, 6, 3}}, {{3, 6, 0}, {3, 0, 6}}, {{6, 0, 3}, {6, 3, 0}},
       {{6, 0, 3}, {6, 3, 0}}, {{3, 6, 0}, {3, 0, 6}}, {{0, 3, 6}, {0, 6, 3}}, {{0, 3, 6}, {0, 6, 3}}};
-  static constexpr unsigned char kFlip[8] = {0, 0, 0, 1, 0, 1, 1, 1};
-  const unsigned char* o1 = kOrder[pos1][kFlip[pos2]];
-  const unsigned char* o2 = kOrder[pos2][kFlip[pos1]];
-  const double* p1 = c + o1[0];
-  const double* p2 = c + 9 + o2[0];
-  const double* q1 = c + o1[1];
-  const double* r1 = c + o1[2];
-  const double* q2 = c + 9 + o2[1];
-  const double* r2 = c + 9 + o2[2];
-  const double dx = p2[0] - p1[0], dy = p2[1] - p1[1], dz = p2[2] - p1[2];
-  const double ex = q1[0] - p1[0], ey = q1[1] - p1[1], ez = q1[2] - p1[2];
-  g1 = ((q2[0] - p1[0]) * (ey * dz - ez * dy) + (q2[1] - p1[1]) * (ez * dx - ex * dz)) +
-       (q2[2] - p1[2]) * (ex * dy - ey * dx);
-  const double gx = r1[0] - p1[0], gy = r1[1] - p1[1], gz = r1[2] - p1[2];
-  const double hx = r2[0] - p1[0], hy = r2[1] - p1[1], hz = r2[2] - p1[2];
-  g2 = (dx * (gy * hz - gz * hy) + dy * (gz * hx - gx * hz)) + dz * (gx * hy - gy * hx);
+  constexpr unsigned char kFlip[8] = {0, 0, 0, 1, 0, 1, 1, 1};  // the lone vertex negative
+  std::array<std::array<unsigned char, 8>, 64> t{};
+  for (unsigned sp = 0; sp < 64; ++sp)
+    for (int k = 0; k < 3; ++k) {
+      t[sp][k] = kOrder[sp & 7u][kFlip[sp >> 3]][k];
+      t[sp][3 + k] = static_cast<unsigned char>(9 + kOrder[sp >> 3][kFlip[sp & 7u]][k]);
+    }
+  return t;
+}();
+
+// Guigue–Devillers' G1 = [p1,q1,p2,q2] and G2 = [p1,r1,r2,p2] on six certain non-zero signs
+// (`sp` as kPick's), both in two lanes: lane 0 G1 as det3_eval(p1, q2, p1, q1, p1, p2), lane 1 G2
+// as det3_eval(p1, p2, p1, r1, p1, r2), each lane det3_eval's operations in its order, so its
+// values bit for bit and the pair's bound covers them (algorithms/exact/README.md, "One pair per
+// call", "G1 and G2 in two lanes").
+[[gnu::always_inline]] inline Double2 gd_values(const double* c, unsigned sp) {
+  const unsigned char* o = kPick[sp].data();
+  const double *p1 = c + o[0], *q1 = c + o[1], *r1 = c + o[2], *p2 = c + o[3], *q2 = c + o[4], *r2 = c + o[5];
+  // det3_eval's u = a1 - a0, v = b1 - b0, w = c1 - c0 per lane, all from p1
+  const auto two = [p1](const double* a, const double* b, int i) { return Double2{a[i], b[i]} - p1[i]; };
+  const Double2 ux = two(q2, p2, 0), uy = two(q2, p2, 1), uz = two(q2, p2, 2);
+  const Double2 vx = two(q1, r1, 0), vy = two(q1, r1, 1), vz = two(q1, r1, 2);
+  const Double2 wx = two(p2, r2, 0), wy = two(p2, r2, 1), wz = two(p2, r2, 2);
+  return (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
 }
 
 // 1: they meet (relation: `cross`); 0: disjoint; -1: undecided (then `ps` holds both triangles'
@@ -142,12 +132,10 @@ template <bool kRelation>
     }
   }
   if ((pos | neg) != 63u) return undecided(u);  // a sign within the bound
-  const unsigned sp = kSplit[pos], pos1 = sp & 7u, pos2 = sp >> 3;
-  double g1, g2;
-  gd_values(c, pos1, pos2, g1, g2);  // step 3
+  const Double2 gg = gd_values(c, kSplit[pos]);  // step 3: G1, G2
   // on the larger of G1, G2 (finite here): one branch per exit, where the two comparisons of
   // each were compiled as two branches on random signs
-  const double g = dmax(g1, g2);
+  const double g = dmax(gg[0], gg[1]);
   if (g > b) return 0;
   if (g < -b) return 1;
   // G1 or G2 within the bound: the box again rather than kept through step 3, where most pairs

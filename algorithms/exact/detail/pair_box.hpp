@@ -1,8 +1,8 @@
 // The pair's six points two coordinates at a time (SSE2 / NEON registers through GCC's vector
 // extension): the boxes of its triangles, the one-pair filter's bound B from their extents, two
-// comparisons as two bits, and the finiteness of its 18 coordinates.
-// Used by one_pair.hpp's filter and `finish`; the bound is proved in algorithms/exact/README.md
-// ("Shared bounds"), the box exit in "One pair per call".
+// comparisons as two bits, the finiteness of its 18 coordinates, and both triangles' plane values
+// in two lanes. Used by one_pair.hpp's filter and `finish`; the bound is proved in
+// algorithms/exact/README.md ("Shared bounds"), the box exit and the lanes in "One pair per call".
 #pragma once
 
 #include "algorithms/exact/detail/predicates.hpp"
@@ -103,6 +103,22 @@ inline bool finite18(const double* c) {
     z += v - v;
   }
   return (z[0] + z[1]) == 0.0;
+}
+
+// (x - a)·((b - a)×(c - a)) for the vertices x of one triangle and the plane abc of the other, as
+// det3_eval evaluates o3 (the kernel's plane_distances), both planes at once: lane 0 of s[k] T1's
+// vertex k against π2, lane 1 T2's against π1; two normals for the instructions of one, and each
+// lane the scalar evaluation's operations, so the same values bit for bit.
+inline void plane_values(const double* c, Double2 (&s)[3]) {
+  const auto two = [c](int i) { return Double2{c[9 + i], c[i]}; };  // the plane's point i, lanes T2 | T1
+  const Double2 ax = two(0), ay = two(1), az = two(2);
+  const Double2 ux = two(3) - ax, uy = two(4) - ay, uz = two(5) - az;
+  const Double2 vx = two(6) - ax, vy = two(7) - ay, vz = two(8) - az;
+  const Double2 nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  for (int k = 0; k < 3; ++k) {
+    const Double2 x = {c[3 * k], c[9 + 3 * k]}, y = {c[3 * k + 1], c[10 + 3 * k]}, z = {c[3 * k + 2], c[11 + 3 * k]};
+    s[k] = ((x - ax) * nx + (y - ay) * ny) + (z - az) * nz;
+  }
 }
 
 }  // namespace tritri::exact::detail

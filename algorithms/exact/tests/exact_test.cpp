@@ -1840,6 +1840,55 @@ TEST(OnePair, TwoLaneComparisonsMeetTheScalarOnes) {
       }
 }
 
+TEST(OnePair, GdValuesInTwoLanesAreTheScalarValues) {
+  // gd_values' lanes against det3_eval on the points of the canonical order, derived here from
+  // the sign bits (lone vertex, flip), bit for bit, for all 36 sign patterns of the two triangles
+  // (flips included), on random, small-integer (touching), perturbed and wide pairs at scales
+  // 2^-360..2^340 (products that underflow or come near overflow) and with a huge, infinite or NaN
+  // coordinate; it fails with the lanes exchanged, or with ux·mx + (uy·my + uz·mz) in the lanes
+  namespace d = ex::detail;
+  GenRng r(29);
+  std::vector<TrianglePair> pairs;
+  for (int i = 0; i < 1500; ++i) pairs.push_back(i % 3 ? random_pair(r) : perturbed(small_int_pair(r), r));
+  for (int i = 0; i < 600; ++i) pairs.push_back(small_int_pair(r));
+  for (int i = 0; i < 900; ++i) pairs.push_back(scaled(wide_pair(r), static_cast<int>(r.integer(-360, 340))));
+  const double odd[] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 0x1p1000};
+  for (int i = 0; i < 18 * 3; ++i) {
+    TrianglePair p = pairs[static_cast<std::size_t>(i)];
+    p.t1[0].data()[i % 18] = odd[i / 18];
+    pairs.push_back(p);
+  }
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, 8) == 0 || (a != a && b != b); };
+  // (p, q, r) of one triangle: the lone vertex of its positive-bit set `pos` first; q and r
+  // swapped when the other triangle's lone vertex is negative
+  const auto order = [](unsigned pos, unsigned other, int base, int (&o)[3]) {
+    const auto lone = [](unsigned m) { return m == 1u || m == 6u ? 0 : (m == 2u || m == 5u ? 1 : 2); };
+    const int l = lone(pos);
+    const bool flip = ((other >> lone(other)) & 1u) == 0u;
+    o[0] = base + 3 * l, o[1] = base + 3 * ((l + 1) % 3), o[2] = base + 3 * ((l + 2) % 3);
+    if (flip) std::swap(o[1], o[2]);
+  };
+  long checked = 0;
+  for (const TrianglePair& p : pairs) {
+    const double* c = p.t1[0].data();
+    for (unsigned pos1 = 1; pos1 <= 6; ++pos1)
+      for (unsigned pos2 = 1; pos2 <= 6; ++pos2) {
+        int o1[3], o2[3];
+        order(pos1, pos2, 0, o1);
+        order(pos2, pos1, 9, o2);
+        const double *p1 = c + o1[0], *q1 = c + o1[1], *r1 = c + o1[2];
+        const double *p2 = c + o2[0], *q2 = c + o2[1], *r2 = c + o2[2];
+        const double g1 = ex::det3_eval(p1, q2, p1, q1, p1, p2).value;
+        const double g2 = ex::det3_eval(p1, p2, p1, r1, p1, r2).value;
+        const d::Double2 g = d::gd_values(c, pos1 | pos2 << 3);
+        EXPECT_TRUE(same(g[0], g1)) << pos1 << " " << pos2 << " " << g[0] << " " << g1;
+        EXPECT_TRUE(same(g[1], g2)) << pos1 << " " << pos2 << " " << g[1] << " " << g2;
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, static_cast<long>(pairs.size()) * 36);
+}
+
 TEST(OnePair, BothPlanesInTwoLanesAreTheScalarValues) {
   // plane_values' lanes against the scalar evaluation (det3_eval's order) of each plane, bit for
   // bit, on random, small-integer (touching, coplanar), perturbed and wide pairs at scales 2^±300 and
