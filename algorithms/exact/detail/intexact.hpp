@@ -153,7 +153,7 @@ inline bool pair_to_int40(const double* c, const double (&mag)[3], PairInt61& ou
   const L2 cz = ((reinterpret_cast<L2>(mz) & exponent) + up) | half;
   const L2 big2[3] = {cxy, L2{cz[0], cxy[0]}, L2{cxy[1], cz[0]}};  // x y | z x | y z, repeated
   L2 ok = {-1, -1};
-  for (int i = 8; i >= 0; --i) {  // T2's last coordinates first: see the exit below
+  for (int i = 0; i < 9; ++i) {
     D2 v;
     std::memcpy(&v, c + 2 * i, sizeof v);
     const D2 big = reinterpret_cast<D2>(big2[i % 3]);
@@ -162,9 +162,6 @@ inline bool pair_to_int40(const double* c, const double (&mag)[3], PairInt61& ou
     const L2 n = reinterpret_cast<L2>(y) - big2[i % 3];  // (y - C_k) / 2^q_k: one binade
     out.x[(2 * i) % 3][(2 * i) / 3] = n[0];
     out.x[(2 * i + 1) % 3][(2 * i + 1) / 3] = n[1];
-    // pairs off the unit are mostly off it at the last two coordinates (random doubles: their
-    // low 13 bits; a touching family's constructed point): they leave before the other eight
-    if (i == 8 && (ok[0] & ok[1]) == 0) return false;
   }
   return (ok[0] & ok[1]) != 0;
 }
