@@ -1917,8 +1917,9 @@ TEST(OnePair, BothPlanesInTwoLanesAreTheScalarValues) {
     d::plane_values(c, s);
     for (int k = 0; k < 3; ++k) {
       const double s1 = scalar(c + 9, c + 3 * k), s2 = scalar(c, c + 9 + 3 * k);
-      EXPECT_TRUE(std::memcmp(&s1, &s[k][0], 8) == 0 || (s1 != s1 && s[k][0] != s[k][0])) << k;
-      EXPECT_TRUE(std::memcmp(&s2, &s[k][1], 8) == 0 || (s2 != s2 && s[k][1] != s[k][1])) << k;
+      const double l0 = s[k][0], l1 = s[k][1];  // by value: clang refuses the address of a lane
+      EXPECT_TRUE(std::memcmp(&s1, &l0, 8) == 0 || (s1 != s1 && l0 != l0)) << k;
+      EXPECT_TRUE(std::memcmp(&s2, &l1, 8) == 0 || (s2 != s2 && l1 != l1)) << k;
     }
   }
   for (unsigned m = 0; m < 64; ++m) {
