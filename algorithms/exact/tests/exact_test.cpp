@@ -1840,6 +1840,17 @@ TEST(OnePair, TwoLaneComparisonsMeetTheScalarOnes) {
       }
 }
 
+
+// Copies of the first 54 pairs with one coordinate (each of the 18 in turn) made infinite, NaN or
+// 2^1000: the two-lane tests' non-finite and huge inputs.
+void add_odd_coordinates(std::vector<TrianglePair>& pairs) {
+  const double odd[] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 0x1p1000};
+  for (int i = 0; i < 18 * 3; ++i) {
+    TrianglePair p = pairs[static_cast<std::size_t>(i)];
+    p.t1[0].data()[i % 18] = odd[i / 18];
+    pairs.push_back(p);
+  }
+}
 TEST(OnePair, GdValuesInTwoLanesAreTheScalarValues) {
   // gd_values' lanes against det3_eval on the points of the canonical order, derived here from
   // the sign bits (lone vertex, flip), bit for bit, for all 36 sign patterns of the two triangles
@@ -1852,12 +1863,7 @@ TEST(OnePair, GdValuesInTwoLanesAreTheScalarValues) {
   for (int i = 0; i < 1500; ++i) pairs.push_back(i % 3 ? random_pair(r) : perturbed(small_int_pair(r), r));
   for (int i = 0; i < 600; ++i) pairs.push_back(small_int_pair(r));
   for (int i = 0; i < 900; ++i) pairs.push_back(scaled(wide_pair(r), static_cast<int>(r.integer(-360, 340))));
-  const double odd[] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 0x1p1000};
-  for (int i = 0; i < 18 * 3; ++i) {
-    TrianglePair p = pairs[static_cast<std::size_t>(i)];
-    p.t1[0].data()[i % 18] = odd[i / 18];
-    pairs.push_back(p);
-  }
+  add_odd_coordinates(pairs);
   const auto same = [](double a, double b) { return std::memcmp(&a, &b, 8) == 0 || (a != a && b != b); };
   // (p, q, r) of one triangle: the lone vertex of its positive-bit set `pos` first; q and r
   // swapped when the other triangle's lone vertex is negative
@@ -1905,12 +1911,7 @@ TEST(OnePair, BothPlanesInTwoLanesAreTheScalarValues) {
   std::vector<TrianglePair> pairs;
   for (int i = 0; i < 3000; ++i) pairs.push_back(i % 3 ? random_pair(r) : perturbed(small_int_pair(r), r));
   for (int i = 0; i < 1000; ++i) pairs.push_back(scaled(wide_pair(r), static_cast<int>(r.integer(-300, 300))));
-  const double odd[] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), 0x1p1000};
-  for (int i = 0; i < 18 * 3; ++i) {
-    TrianglePair p = pairs[static_cast<std::size_t>(i)];
-    p.t1[0].data()[i % 18] = odd[i / 18];
-    pairs.push_back(p);
-  }
+  add_odd_coordinates(pairs);
   for (const TrianglePair& p : pairs) {
     const double* c = p.t1[0].data();
     d::Double2 s[3];
