@@ -118,6 +118,7 @@ struct Kernel {
 
 // The kernels, once per instruction set of this architecture on the lane layer's V.
 #define TRITRI_LANES_KERNEL "algorithms/exact/detail/kernel.inc"
+#define TRITRI_LANES_MASK_BITS  // AVX-512: masks in mask registers (README "AVX-512's pass 1: masks in mask registers")
 #include "algorithms/lanes/each_isa.hpp"
 // By Isa; nullptr where no kernel is compiled (scalar, another architecture's sets).
 inline constexpr std::array<const Kernel*, kIsas.size()> kKernels = TRITRI_LANES_TABLE(kKernel);

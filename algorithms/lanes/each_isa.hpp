@@ -12,6 +12,9 @@
 // its enclosing namespaces hold. TRITRI_LANES_TABLE(name) is then the initializer of a table by
 // Isa (tritri/isa.hpp's order) of &isa_*::name, nullptr for a set not compiled here.
 //
+// A kernel written with the named comparisons (V::lt ...) may also define TRITRI_LANES_MASK_BITS
+// before the include: its AVX-512 masks are then mask-register bits, not lane vectors (ops.inc).
+//
 // Why regions and not one template: a function compiled for AVX2 may only be called after the
 // CPU check, so every function of the AVX2 copy (the kernel's and V's) must be compiled under
 // target("avx2") and must not be merged by the linker with a baseline one of the same name; a
@@ -53,6 +56,7 @@
 #endif
 
 #undef TRITRI_LANES_KERNEL
+#undef TRITRI_LANES_MASK_BITS
 #undef TRITRI_LANES_STRING
 #undef TRITRI_LANES_BEGIN_TARGET
 #undef TRITRI_LANES_END_TARGET

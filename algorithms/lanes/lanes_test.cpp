@@ -17,6 +17,13 @@ inline bool port(const TrianglePair& pair) { return !(pair.t1[0][0] < 0); }
 #define TRITRI_LANES_KERNEL "algorithms/lanes/ops_test_kernel.inc"
 #include "algorithms/lanes/foreach_isa.hpp"
 }  // namespace tritri::lanes::ops_test
+// The same kernel with AVX-512's masks as mask-register bits (TRITRI_LANES_MASK_BITS, ops.inc).
+namespace tritri::lanes::ops_test_bits {
+using ops_test::port;
+#define TRITRI_LANES_MASK_BITS
+#define TRITRI_LANES_KERNEL "algorithms/lanes/ops_test_kernel.inc"
+#include "algorithms/lanes/foreach_isa.hpp"
+}  // namespace tritri::lanes::ops_test_bits
 
 namespace tritri::lanes {
 namespace {
@@ -62,16 +69,17 @@ TEST(LaneOps, AgreeWithTheScalarOperationsOnEveryInstructionSet) {
   for (Isa isa : kIsas) {
     if (!supported(isa) || !ops_test::kKernels[static_cast<std::size_t>(isa)]) continue;
     ++sets;
+    for (const bool bits : {false, true})
     for (std::size_t n : {pairs.size(), pairs.size() - 1, std::size_t{3}}) {
       std::vector<Overlap> out(n, Overlap::unsupported);
       stats() = Stats{};
-      ops_test::batch(isa, pairs.data(), n, out.data());
+      (bits ? ops_test_bits::batch : ops_test::batch)(isa, pairs.data(), n, out.data());
       std::uint64_t by_port = 0;
       for (std::size_t i = 0; i < n; ++i) {
         const bool tail = i >= n - n % width(isa);
         by_port += tail || pairs[i].t1[0][0] < 0;
         ASSERT_EQ(out[i], ops_test::port(pairs[i]) ? Overlap::yes : Overlap::no)
-            << to_string(isa) << ": pair " << i << " of " << n;
+            << to_string(isa) << (bits ? " (mask bits)" : "") << ": pair " << i << " of " << n;
       }
       EXPECT_EQ(stats().pairs, n);
       EXPECT_EQ(stats().scalar, by_port) << to_string(isa);
