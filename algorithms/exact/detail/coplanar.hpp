@@ -88,10 +88,31 @@ inline void edge_maxima(const Double2 (&n)[3][3], Double2 (&m)[3]) {
 }
 
 // Every value exact: false when an orientation is zero (the caller classifies); else the
-// relation by the separating-axis theorem (step 3 of "The decisions").
+// relation by the separating-axis theorem (step 3 of "The decisions"), after the first vertex of
+// each triangle against the other's edge lines: one inside the other (closed; strictly at the
+// relation level) answers a meet with three values of the 18 (algorithms/exact/README.md, "A
+// vertex inside the other triangle, on exact values").
 template <bool kRelation>
-bool coplanar_exact(const double* c, const CoplanarValues& cv, Relation& out) {
-  if ((cv.orient[0] == 0.0) | (cv.orient[1] == 0.0)) return false;
+bool coplanar_exact(const double* c, const Projected& p, Relation& out) {
+  const Double2 orient = coplanar_orient(p);
+  if ((orient[0] == 0.0) | (orient[1] == 0.0)) return false;
+  CoplanarValues cv;
+  cv.orient = orient;
+  Double2 col[3], first[3];
+  coplanar_column(p, 0, col);
+  const Long2 sign = reinterpret_cast<Long2>(orient) & Long2{INT64_MIN, INT64_MIN};
+  for (int e = 0; e < 3; ++e)  // inside positive
+    cv.edge[e][0] = col[e], first[e] = reinterpret_cast<Double2>(reinterpret_cast<Long2>(col[e]) ^ sign);
+  const Long2 in = kRelation ? (first[0] > 0.0) & (first[1] > 0.0) & (first[2] > 0.0)
+                             : (first[0] >= 0.0) & (first[1] >= 0.0) & (first[2] >= 0.0);
+  if ((in[0] | in[1]) != 0) {
+    out = Relation::coplanar_overlap;
+    return true;
+  }
+  for (int w = 1; w < 3; ++w) {  // the other two columns
+    coplanar_column(p, w, col);
+    for (int e = 0; e < 3; ++e) cv.edge[e][w] = col[e];
+  }
   Double2 n[3][3], m[3];
   inside_positive(cv, n);
   edge_maxima(n, m);
@@ -170,9 +191,9 @@ bool coplanar_known(const double* c, Grid& g, Relation& out) {
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
   const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
   const Projected p = project(t1, t2, i, j);
-  const CoplanarValues cv = coplanar_values(p);
   // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
-  if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, cv, out);
+  if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, p, out);
+  const CoplanarValues cv = coplanar_values(p);
   const double t = projected_bound(p);
   if (const int d = coplanar_certain(cv, t); d >= 0) {
     out = d ? Relation::coplanar_overlap : Relation::coplanar_disjoint;

@@ -44,16 +44,27 @@ struct CoplanarValues {
   Double2 orient;      // o2(v0, v1, v2), v the lane's triangle
   Double2 edge[3][3];  // [e][w]: o2(v_e, v_e+1, u_w), u the other triangle
 };
-inline CoplanarValues coplanar_values(const Projected& p) {
-  CoplanarValues out;
-  Double2 ui[3], uj[3];  // the other triangle's vertices: the lanes exchanged
-  for (int w = 0; w < 3; ++w) ui[w] = Double2{p.i[w][1], p.i[w][0]}, uj[w] = Double2{p.j[w][1], p.j[w][0]};
+// Column w of the edge values: the other triangle's vertex w against the lane's three edge lines
+// (lane 0 T2's vertex w against T1's edges, lane 1 T1's against T2's), det2_value's operations.
+inline void coplanar_column(const Projected& p, int w, Double2 (&col)[3]) {
+  const Double2 ui = {p.i[w][1], p.i[w][0]}, uj = {p.j[w][1], p.j[w][0]};  // the lanes exchanged
   for (int e = 0; e < 3; ++e) {
     const int f = e == 2 ? 0 : e + 1;
     const Double2 ei = p.i[f] - p.i[e], ej = p.j[f] - p.j[e];
-    for (int w = 0; w < 3; ++w) out.edge[e][w] = ei * (uj[w] - p.j[e]) - ej * (ui[w] - p.i[e]);
+    col[e] = ei * (uj - p.j[e]) - ej * (ui - p.i[e]);
   }
-  out.orient = (p.i[1] - p.i[0]) * (p.j[2] - p.j[0]) - (p.j[1] - p.j[0]) * (p.i[2] - p.i[0]);
+}
+inline Double2 coplanar_orient(const Projected& p) {
+  return (p.i[1] - p.i[0]) * (p.j[2] - p.j[0]) - (p.j[1] - p.j[0]) * (p.i[2] - p.i[0]);
+}
+inline CoplanarValues coplanar_values(const Projected& p) {
+  CoplanarValues out;
+  for (int w = 0; w < 3; ++w) {
+    Double2 col[3];
+    coplanar_column(p, w, col);
+    for (int e = 0; e < 3; ++e) out.edge[e][w] = col[e];
+  }
+  out.orient = coplanar_orient(p);
   return out;
 }
 

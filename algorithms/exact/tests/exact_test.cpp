@@ -1374,6 +1374,37 @@ TEST(CoplanarOnePair, EveryRouteAgreesWithTheOracle) {
   EXPECT_GT(ex::intexact::counts().fast2, 1000u);  // refused by the shared conversion: per call
 }
 
+// The exact coplanar step's first column (coplanar.hpp's coplanar_exact): the first vertex of
+// either triangle inside the other (closed at the overlap level, strictly at the relation level)
+// is a meet. T1 = (0,0), (12,0), (0,12) in a general integer plane; T2's first vertex strictly
+// inside, on the edge's midpoint (6,0), on the vertex (12,0), or one unit outside that edge; its
+// other two vertices below the edge (so that it touches from outside) or anywhere. Every vertex
+// and argument order (T1's first vertex against T2 too), on the 3-D grid and translated by 2^20
+// (off it, on the 2-D grid), both levels, every path against the oracle.
+TEST(CoplanarOnePair, AVertexInsideTheOtherIsDecidedFirst) {
+  GenRng r(33);
+  std::vector<TrianglePair> all;
+  for (int i = 0; i < 32; ++i) {
+    const auto f = random_frame(r);
+    static constexpr double kFirst[4][2] = {{4, 4}, {6, 0}, {12, 0}, {6, -1}};
+    const double* p = kFirst[i % 4];
+    const bool below = i % 8 < 4;
+    auto other = [&] {
+      return std::array<double, 2>{static_cast<double>(r.integer(-20, 20)),
+                                   static_cast<double>(below ? r.integer(-20, -1) : r.integer(-20, 20))};
+    };
+    const std::array<double, 2> q = other(), s = other();
+    TrianglePair pair;
+    pair.t1 = Triangle{{in_frame(f, 0, 0), in_frame(f, 12, 0), in_frame(f, 0, 12)}};
+    pair.t2 = Triangle{{in_frame(f, p[0], p[1]), in_frame(f, q[0], q[1]), in_frame(f, s[0], s[1])}};
+    for (const auto& v : all_orders(pair)) {
+      all.push_back(v);
+      all.push_back(translated(v, V(std::ldexp(1.0, 20), -std::ldexp(1.0, 20), std::ldexp(1.0, 20))));
+    }
+  }
+  expect_all_paths_agree(all, "a vertex inside the other");
+}
+
 // The second pass's 2-D grid (kernel_pass2.inc): flat pairs off the 3-D grid whose projected
 // coordinates fit 25 bits are decided in lanes, touching included; at 26 bits plain double can
 // round an orientation of +1 to 0 (the pair below: T2 one unit outside T1's edge u -> w), so they
