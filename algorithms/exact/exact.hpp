@@ -198,13 +198,13 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
   for (std::size_t start = 0; start < n; start += kChunk) {
     const std::size_t m = n - start < kChunk ? n - start : kChunk;
     const std::size_t simd = lanes ? m - m % lanes : 0;
-    std::size_t np = passes ? passes->first(pairs + start, simd, out + start, pending) : 0;
-    for (std::size_t j = simd; j < m; ++j) pending[np++] = static_cast<std::uint32_t>(j);
-    stats().pending += np;
-    if (!passes) {
-      exact_pass<kRelation>(pairs + start, out + start, pending, np);
-      continue;
-    }
+    const std::size_t np = passes ? passes->first(pairs + start, simd, out + start, pending) : 0;
+    // the tail (fewer pairs than lanes; every pair where no kernel runs) through the one-pair
+    // path: a block of pass 2 would carry it in mostly empty lanes (algorithms/exact/README.md,
+    // "The batch's tail")
+    for (std::size_t j = simd; j < m; ++j) pending[np + (j - simd)] = static_cast<std::uint32_t>(j);
+    stats().pending += np + (m - simd);
+    exact_pass<kRelation>(pairs + start, out + start, pending + np, m - simd);
     for (std::size_t s = 0; s < np; s += kSlice) {
       const std::size_t count = np - s < kSlice ? np - s : kSlice;
       const std::size_t nr = passes->second(pairs + start, out + start, pending + s, count, rest, &handover);

@@ -106,12 +106,12 @@ template <bool kRelation>
   // steps 1 and 2 together (lane 0: T1 against π2, lane 1: T2 against π1)
   Double2 s[3];
   plane_values(c, s);
-  const Double2 hi = {b, b}, lo = {-b, -b};
-  const unsigned p[3] = {lt2(hi, s[0]), lt2(hi, s[1]), lt2(hi, s[2])};
-  const unsigned n[3] = {lt2(s[0], lo), lt2(s[1], lo), lt2(s[2], lo)};
+  const Double2 hi = {b, b}, lo = -hi;
   // overlap level: either triangle one-sided -> disjoint, one branch for both
   if constexpr (!kRelation)
-    if (((p[0] & p[1] & p[2]) | (n[0] & n[1] & n[2])) != 0u) return 0;
+    if (either_one_sided(hi, lo, s)) return 0;
+  const unsigned p[3] = {lt2(hi, s[0]), lt2(hi, s[1]), lt2(hi, s[2])};
+  const unsigned n[3] = {lt2(s[0], lo), lt2(s[1], lo), lt2(s[2], lo)};
   // bits 2k, 2k + 1: s1[k], s2[k] certain and positive (pos) or negative (neg)
   const unsigned pos = p[0] | p[1] << 2 | p[2] << 4, neg = n[0] | n[1] << 2 | n[2] << 4;
   const double s1[3] = {s[0][0], s[1][0], s[2][0]}, s2[3] = {s[0][1], s[1][1], s[2][1]};

@@ -76,8 +76,28 @@ inline double bound_of_box(const Box& u) {
   const double ez = u.hi_z - u.lo_z;
   // `<=` is false for NaN: a NaN extent fails as before; all three tested in one branch
   if ((le2(e, most) | static_cast<unsigned>(ez <= bound::kMax3) << 2) != 7u) return __builtin_inf();
-  const Double2 m = e > least ? e : least;  // dmax(e, kMin3) for x and y at once (e finite here)
+  // dmax(e, kMin3) for x and y at once (e finite here): maxpd, which is e > least ? e : least
+  // lane by lane (GCC compiled the vector ternary as a comparison and three logical operations)
+#if defined(__SSE2__)
+  const Double2 m = reinterpret_cast<Double2>(_mm_max_pd(reinterpret_cast<__m128d>(e), reinterpret_cast<__m128d>(least)));
+#else
+  const Double2 m = e > least ? e : least;
+#endif
   return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
+}
+
+// Either lane's three values all above `hi` or all below `lo` (lt2's comparisons, false for NaN):
+// the masks combined in the register and one movmskpd, where six movmskpd and five logical
+// operations on their bits had been compiled.
+inline bool either_one_sided(Double2 hi, Double2 lo, const Double2 (&s)[3]) {
+#if defined(__SSE2__)
+  const auto lt = [](Double2 a, Double2 b) { return _mm_cmplt_pd(reinterpret_cast<__m128d>(a), reinterpret_cast<__m128d>(b)); };
+  const __m128d pos = _mm_and_pd(_mm_and_pd(lt(hi, s[0]), lt(hi, s[1])), lt(hi, s[2]));
+  const __m128d neg = _mm_and_pd(_mm_and_pd(lt(s[0], lo), lt(s[1], lo)), lt(s[2], lo));
+  return _mm_movemask_pd(_mm_or_pd(pos, neg)) != 0;
+#else
+  return ((lt2(hi, s[0]) & lt2(hi, s[1]) & lt2(hi, s[2])) | (lt2(s[0], lo) & lt2(s[1], lo) & lt2(s[2], lo))) != 0u;
+#endif
 }
 
 // The largest |coordinate| per axis of a box of finite coordinates: max(hi, -lo), exact.

@@ -1584,6 +1584,41 @@ std::vector<TrianglePair> handover_mix(GenRng& r, std::size_t n) {
 
 }  // namespace
 
+// A batch's tail (its last n mod W pairs) goes through the one-pair path (algorithms/exact/README.md,
+// "The batch's tail"): batches of every length from 1 to 2W + 1 at several offsets of a mixed pool,
+// on every ISA, both levels, against the one-pair answers, and the tail counted as pending and
+// as reaching the scalar pass. Fails when the tail's indices are not handed to `exact_pass`
+// (its answers are never written) or the stats skip it.
+TEST(Tail, EveryTailLengthAgreesWithTheOnePairPath) {
+  GenRng r(43);
+  const std::vector<TrianglePair> pairs = handover_mix(r, 64);
+  for (ex::Isa isa : kIsas) {
+    if (!ex::supported(isa)) continue;
+    SCOPED_TRACE(ex::to_string(isa));
+    const std::size_t w = isa == ex::Isa::scalar ? 1 : tritri::lanes::width(isa);
+    for (std::size_t n = 1; n <= 2 * w + 1; ++n)
+      for (std::size_t at : {std::size_t{0}, std::size_t{3}, std::size_t{17}}) {
+        const TrianglePair* p = pairs.data() + at;
+        std::vector<Overlap> ov(n, Overlap::unsupported);
+        std::vector<RelationAnswer> rel(n, RelationAnswer{Relation::unknown, Dimension::unknown});
+        ex::reset_stats();
+        ex::overlap_batch_with(isa, p, n, ov.data());
+        const ex::Stats st = ex::stats();
+        ex::relation_batch_with(isa, p, n, rel.data());
+        for (std::size_t k = 0; k < n; ++k) {
+          ASSERT_EQ(ov[k], ex::overlap(p[k])) << n << " " << at << " " << k;
+          const RelationAnswer want = ex::relation(p[k]);
+          ASSERT_EQ(rel[k].relation, want.relation) << n << " " << at << " " << k;
+          ASSERT_EQ(rel[k].dimension, want.dimension) << n << " " << at << " " << k;
+        }
+        const std::size_t tail = n % w;
+        EXPECT_GE(st.pending, tail) << n;
+        EXPECT_GE(st.scalar, tail) << n;
+        EXPECT_EQ(st.filter + st.shared + st.grid + st.filtered + st.declined, st.scalar) << n;
+      }
+  }
+}
+
 // Pass 2 hands each slot it leaves the values the one-pair filter would compute for its pair (the
 // bound, the six plane values, which are within the bound, the box): `handover_pass` runs `finish`
 // on them in place of the filter (algorithms/exact/README.md, "The scalar pass from pass 2's values").
@@ -1665,7 +1700,8 @@ TEST(Handover, TheScalarPassDecidesPassTwosLeftovers) {
     for (const RelationAnswer& a : rel) ASSERT_EQ(a.relation, Relation::touch_segment);
     const ex::Stats st = run_overlap(isa, mix);
     EXPECT_GT(st.scalar, mix.size() / 5) << "the mix reaches the scalar pass";
-    EXPECT_EQ(st.filter, 0u) << "pass 2's leftovers skip the filter";
+    // only the batch's tail goes through the one-pair filter ("The batch's tail")
+    EXPECT_LE(st.filter, mix.size() % tritri::lanes::width(isa)) << "pass 2's leftovers skip the filter";
   }
   expect_all_paths_agree(mix, "handover mix");
 }
@@ -1823,8 +1859,8 @@ TEST(AxisPlane, SignsAgainstItAreAComparisonTimesItsOrientation) {
 }
 
 TEST(OnePair, TwoLaneComparisonsMeetTheScalarOnes) {
-  // lt2 / le2 (two comparisons per movmskpd), boxes_apart (six comparisons in one mask) and
-  // bound_of_box (the three extents in one branch) against the scalar comparisons they replace,
+  // lt2 / le2 (two comparisons per movmskpd), boxes_apart (six comparisons in one mask),
+  // bound_of_box (the three extents in one branch, max(e, kMin3) by maxpd) against the scalar comparisons they replace,
   // on values at, beside and across the limits, signed zeros, infinities and NaN (one operand's
   // lanes exchanged in lt2, or `<` for `<=` in le2, each fail)
   namespace d = ex::detail;
@@ -1869,6 +1905,21 @@ TEST(OnePair, TwoLaneComparisonsMeetTheScalarOnes) {
                  ex::bound::kAbs3;
         EXPECT_EQ(d::bound_of_box(u), want) << ex_ << " " << ey << " " << ez;
       }
+  // either_one_sided (the masks combined in the register) against six scalar comparisons per
+  // lane: every triple of v in lane 0, each with the triples (y, x2, x0) in lane 1 (the third
+  // comparison of either side dropped, or a lane's operands exchanged, each fail)
+  const auto side = [](double s0, double s1, double s2, double hi, double lo) {
+    return (hi < s0 && hi < s1 && hi < s2) || (s0 < lo && s1 < lo && s2 < lo);
+  };
+  const d::Double2 hi2 = {b, b}, lo2 = {-b, -b};
+  for (double x0 : v)
+    for (double x1 : v)
+      for (double x2 : v)
+        for (double y : v) {
+          const d::Double2 s[3] = {{x0, y}, {x1, x2}, {x2, x0}};
+          const bool want = side(x0, x1, x2, b, -b) || side(y, x2, x0, b, -b);
+          ASSERT_EQ(d::either_one_sided(hi2, lo2, s), want) << x0 << " " << x1 << " " << x2 << " " << y;
+        }
 }
 
 
