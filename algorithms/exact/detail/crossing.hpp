@@ -1,17 +1,14 @@
-// Touching pairs after the filter (one_pair.hpp's `finish`). Crossing planes after the plane signs
-// are exact (`crossing_known`): the canonical order of classify.hpp's `crossing` for any two
-// allowed sign triples, zeros included, as one table row per pair of triples, and
-// Guigue–Devillers' G1, G2 on its points in two lanes. Proved in algorithms/exact/README.md,
-// "Crossing planes from exact signs: one table row, G1 and G2 in two lanes". And the shared-vertex
-// test's x and y for all nine vertex pairs at once ("Shared vertices: x and y of nine pairs at
-// once").
+// Crossing planes after the plane signs are exact (one_pair.hpp's `crossing_known`): the canonical
+// order of classify.hpp's `crossing` for any two allowed sign triples, zeros included, as one table
+// row per pair of triples, and Guigue–Devillers' G1, G2 on its points in two lanes. Proved in
+// algorithms/exact/README.md, "Crossing planes from exact signs: one table row, G1 and G2 in two
+// lanes".
 #pragma once
 
 #include "algorithms/exact/detail/classify.hpp"
 #include "algorithms/exact/detail/pair_box.hpp"
 
 #include <array>
-#include <cstring>
 #include <utility>
 
 namespace tritri::exact::detail {
@@ -51,25 +48,6 @@ inline constexpr auto kCanon = [] {
   const Double2 vx = two(q1, r1, 0), vy = two(q1, r1, 1), vz = two(q1, r1, 2);
   const Double2 wx = two(p2, r2, 0), wy = two(p2, r2, 1), wz = two(p2, r2, 2);
   return (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
-}
-
-// Bit 3i + j: T1's vertex i and T2's vertex j have equal x and equal y (`==` on doubles: -0
-// equals +0, NaN equals nothing), from six loads and nine two-lane comparisons.
-inline unsigned equal_xy(const double* c) {
-  Double2 a[3], b[3];
-  for (int i = 0; i < 3; ++i) std::memcpy(&a[i], c + 3 * i, sizeof a[i]), std::memcpy(&b[i], c + 9 + 3 * i, sizeof b[i]);
-  unsigned m = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-#if defined(__SSE2__)
-      const unsigned e = static_cast<unsigned>(
-          _mm_movemask_pd(_mm_cmpeq_pd(reinterpret_cast<__m128d>(a[i]), reinterpret_cast<__m128d>(b[j]))));
-#else
-      const unsigned e = static_cast<unsigned>(a[i][0] == b[j][0]) | static_cast<unsigned>(a[i][1] == b[j][1]) << 1;
-#endif
-      m |= static_cast<unsigned>(e == 3u) << (3 * i + j);
-    }
-  return m;
 }
 
 }  // namespace tritri::exact::detail

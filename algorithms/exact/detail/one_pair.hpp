@@ -155,21 +155,17 @@ inline unsigned shared_candidates(unsigned open) {
 }
 
 // Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
-// of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after;
-// with more than three candidates (coplanar pairs have nine) x and y of all nine at once, then z
-// of those equal in both (algorithms/exact/README.md, "Shared vertices: x and y of nine pairs at
-// once"). kFirst: only whether there is one (the overlap level), the first found alone.
+// of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
+// kFirst: only whether there is one (the overlap level), the first found alone.
 template <bool kFirst>
 inline unsigned shared_vertices(const double* c, unsigned candidates) {
   static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
-  const unsigned two = candidates & (candidates - 1u), three = two & (two - 1u);
-  const bool many = (three & (three - 1u)) != 0u;
   unsigned bits = 0;
-  for (unsigned m = many ? candidates & equal_xy(c) : candidates; m != 0u; m &= m - 1u) {
+  for (unsigned m = candidates; m != 0u; m &= m - 1u) {
     const int k = __builtin_ctz(m);
     const double* a = c + kRow[k];
     const double* b = c + kCol[k];
-    if ((many || (a[0] == b[0] && a[1] == b[1])) && a[2] == b[2]) {
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) {
       bits |= 1u << k;
       if (kFirst) break;
     }

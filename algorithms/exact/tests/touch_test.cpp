@@ -1,5 +1,5 @@
 // Unit tests of exact's path for touching pairs after the filter (detail/crossing.hpp and
-// one_pair.hpp's `crossing_known`, `shared_vertices`): the tables against their definitions
+// one_pair.hpp's `crossing_known`): the tables against their definitions
 // written again here, the two-lane values against det3_eval and GMP, and the one-pair answers
 // against the oracle on touching pairs in every vertex order.
 #include "algorithms/exact/exact.hpp"
@@ -229,37 +229,3 @@ TEST(Crossing, TouchingPairsInEveryOrderAgreeWithTheOracle) {
   EXPECT_GT(touch, 2000);
 }
 
-TEST(SharedVertices, NineAtOnceAreTheComparisons) {
-  // shared_vertices at both levels against the nine comparisons written again here, for all 512
-  // candidate masks (the matrix of x and y from four candidates on, the loop below), on pairs of
-  // coordinates in -1..1 (many equal, coplanar and shared vertices), with -0 beside +0 and a NaN
-  // at each coordinate; it fails with i and j exchanged in equal_xy's bit (any threshold for the
-  // matrix gives the same bits: it only chooses the cheaper way)
-  GenRng r(47);
-  std::vector<TrianglePair> pairs;
-  for (int i = 0; i < 400; ++i) pairs.push_back(small_int_pair(r, 1));
-  for (int i = 0; i < 18; ++i) {
-    TrianglePair p = pairs[static_cast<std::size_t>(i)], q = p;
-    p.t1[0].data()[i] = std::numeric_limits<double>::quiet_NaN();
-    for (int k = 0; k < 18; ++k)
-      if (q.t1[0].data()[k] == 0.0 && (k + i) % 2) q.t1[0].data()[k] = -0.0;
-    pairs.push_back(p);
-    pairs.push_back(q);
-  }
-  long found = 0;
-  for (const TrianglePair& p : pairs) {
-    const double* c = p.t1[0].data();
-    for (unsigned cand = 0; cand < 512; ++cand) {
-      unsigned want = 0;
-      for (int k = 0; k < 9; ++k) {
-        const double *a = c + 3 * (k / 3), *b = c + 9 + 3 * (k % 3);
-        if (((cand >> k) & 1u) && a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) want |= 1u << k;
-      }
-      ASSERT_EQ(d::shared_vertices<false>(c, cand), want) << cand;
-      const unsigned first = d::shared_vertices<true>(c, cand);
-      ASSERT_EQ(first, want & (0u - want)) << cand;  // the lowest bit alone
-      found += want != 0u;
-    }
-  }
-  EXPECT_GT(found, 20000);
-}
