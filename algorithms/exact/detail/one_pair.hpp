@@ -24,6 +24,7 @@
 #pragma once
 
 #include "algorithms/exact/detail/coplanar.hpp"
+#include "algorithms/exact/detail/crossing.hpp"
 #include "algorithms/exact/detail/pair_box.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
 
@@ -277,24 +278,27 @@ struct LazyGrid {
 }
 
 // Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
-// proper, neither sign triple one-sided nor all zero; G1 and G2 against the pair's bound first.
+// proper, neither sign triple one-sided nor all zero: the canonical order by one kCanon row, G1
+// and G2 in two lanes against the pair's bound (one branch per exit, as the filter's step 3; the
+// values are finite when B is, and no comparison with B = +inf holds), then their exact signs
+// (algorithms/exact/README.md, "Crossing planes from exact signs: one table row, G1 and G2 in two
+// lanes").
 template <bool kRelation>
-Relation crossing_known(const double* c, const int s1[3], const int s2[3], double bound, LazyGrid& g) {
-  int l1, f1, l2, f2;
-  lone_vertex(s1, l1, f1);
-  lone_vertex(s2, l2, f2);
-  static constexpr int kSucc[4] = {1, 2, 0, 1};  // (l + 1) % 3 at l, (l + 2) % 3 at l + 1
-  int p1 = l1, q1 = kSucc[l1], r1 = kSucc[l1 + 1];  // point indices 0..5
-  int p2 = 3 + l2, q2 = 3 + kSucc[l2], r2 = 3 + kSucc[l2 + 1];
-  if (f2 < 0) std::swap(q1, r1);  // flips π1 so that p2 is on its positive side
-  if (f1 < 0) std::swap(q2, r2);  // flips π2 so that p1 is on its positive side
-  P P1 = c + 3 * p1, Q1 = c + 3 * q1, R1 = c + 3 * r1, P2 = c + 3 * p2, Q2 = c + 3 * q2, R2 = c + 3 * r2;
-  const int g1 = sign_o3(det3_eval(P1, Q1, P1, P2, P1, Q2).value, bound, g, p1, q1, p2, q2);
-  if (g1 > 0) return Relation::disjoint;
-  const int g2 = sign_o3(det3_eval(P1, R1, P1, R2, P1, P2).value, bound, g, p1, r1, r2, p2);
-  if (g2 > 0) return Relation::disjoint;
+[[gnu::always_inline]] inline Relation crossing_known(const double* c, const int s1[3], const int s2[3], double bound,
+                                                     LazyGrid& g) {
+  const unsigned char* o = kCanon[27 * sign_index(s1) + sign_index(s2)].data();
+  const Double2 gg = gd_lanes(c, o);
+  const double hi = dmax(gg[0], gg[1]);
+  if (hi > bound) return Relation::disjoint;
+  int g1 = -1, g2 = -1;  // both certainly negative unless a value is within the bound
+  if (!(hi < -bound)) {
+    g1 = sign_o3(gg[0], bound, g, o[0] / 3, o[1] / 3, o[3] / 3, o[4] / 3);
+    if (g1 > 0) return Relation::disjoint;
+    g2 = sign_o3(gg[1], bound, g, o[0] / 3, o[2] / 3, o[5] / 3, o[3] / 3);
+    if (g2 > 0) return Relation::disjoint;
+  }
   if (!kRelation) return Relation::cross;  // meets
-  if (g1 == 0 || g2 == 0 || s1[l1] == 0 || s2[l2] == 0) return Relation::touch_point;
+  if (g1 == 0 || g2 == 0 || s1[o[0] / 3] == 0 || s2[o[3] / 3 - 3] == 0) return Relation::touch_point;
   return (zero_count(s1) == 2 || zero_count(s2) == 2) ? Relation::touch_segment : Relation::cross;
 }
 
