@@ -78,19 +78,11 @@ inline constexpr auto kPick = [] {
 }();
 
 // Guigue–Devillers' G1 = [p1,q1,p2,q2] and G2 = [p1,r1,r2,p2] on six certain non-zero signs
-// (`sp` as kPick's), both in two lanes: lane 0 G1 as det3_eval(p1, q2, p1, q1, p1, p2), lane 1 G2
-// as det3_eval(p1, p2, p1, r1, p1, r2), each lane det3_eval's operations in its order, so its
-// values bit for bit and the pair's bound covers them (algorithms/exact/README.md, "One pair per
-// call", "G1 and G2 in two lanes").
+// (`sp` as kPick's), both in two lanes by crossing.hpp's `gd_lanes` on kPick's row: each lane
+// det3_eval's operations in its order, so its values bit for bit and the pair's bound covers them
+// (algorithms/exact/README.md, "One pair per call", "G1 and G2 in two lanes").
 [[gnu::always_inline]] inline Double2 gd_values(const double* c, unsigned sp) {
-  const unsigned char* o = kPick[sp].data();
-  const double *p1 = c + o[0], *q1 = c + o[1], *r1 = c + o[2], *p2 = c + o[3], *q2 = c + o[4], *r2 = c + o[5];
-  // det3_eval's u = a1 - a0, v = b1 - b0, w = c1 - c0 per lane, all from p1
-  const auto two = [p1](const double* a, const double* b, int i) { return Double2{a[i], b[i]} - p1[i]; };
-  const Double2 ux = two(q2, p2, 0), uy = two(q2, p2, 1), uz = two(q2, p2, 2);
-  const Double2 vx = two(q1, r1, 0), vy = two(q1, r1, 1), vz = two(q1, r1, 2);
-  const Double2 wx = two(p2, r2, 0), wy = two(p2, r2, 1), wz = two(p2, r2, 2);
-  return (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+  return gd_lanes(c, kPick[sp].data());
 }
 
 // 1: they meet (relation: `cross`); 0: disjoint; -1: undecided (then `ps` holds both triangles'
