@@ -184,12 +184,16 @@ bool coplanar_by_signs(const double* c, Grid& g, const CoplanarValues& cv, doubl
 // integer conversion.
 template <bool kRelation, class Grid>
 bool coplanar_known(const double* c, Grid& g, Relation& out) {
+  const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
+  // on the 3-D grid every o2 is exact and any projection with both orientations non-zero decides
+  // (algorithms/exact/README.md, "Coplanar pairs on the grid: (x, y) first"): T1's normal only
+  // when an orientation in (x, y) is zero
+  if (g.state == 1 && coplanar_exact<kRelation>(c, project(t1, t2, 0, 1), out)) return true;
   const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
   const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
   const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
   const int k = ((ax >= ay) & (ax >= az)) ? 0 : (ay >= az ? 1 : 2);
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
-  const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
   const Projected p = project(t1, t2, i, j);
   // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
   if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, p, out);

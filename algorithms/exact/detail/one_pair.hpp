@@ -25,6 +25,7 @@
 
 #include "algorithms/exact/detail/coplanar.hpp"
 #include "algorithms/exact/detail/crossing.hpp"
+#include "algorithms/exact/detail/finish_front.hpp"
 #include "algorithms/exact/detail/pair_box.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
 
@@ -140,17 +141,24 @@ template <bool kRelation>
 // π2, so T1's vertex i equal to T2's vertex j has an exact value 0 against π2, and likewise
 // against π1; B bounds the error of both values, so neither is certain (algorithms/exact/README.md,
 // "The fixed cost of `finish`").
-inline unsigned shared_candidates(unsigned open) {
-  // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
-  const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
-  return rows & (open >> 3) * 0x49u;
-}
+// One look-up per pair: the bit arithmetic had cost about 12 instructions.
+inline constexpr auto kCandidates = [] {
+  std::array<unsigned short, 64> t{};
+  for (unsigned open = 0; open < 64; ++open) {
+    // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
+    const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
+    t[open] = static_cast<unsigned short>(rows & (open >> 3) * 0x49u);
+  }
+  return t;
+}();
+inline unsigned shared_candidates(unsigned open) { return kCandidates[open & 63u]; }
 
 // Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
 // of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
 // kFirst: only whether there is one (the overlap level), the first found alone.
 template <bool kFirst>
 inline unsigned shared_vertices(const double* c, unsigned candidates) {
+  if (candidates == 0x1ffu) return all_nine_shared<kFirst>(c);  // every value within the bound
   static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
   unsigned bits = 0;
   for (unsigned m = candidates; m != 0u; m &= m - 1u) {
@@ -207,17 +215,14 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // (algorithms/exact/README.md, "The grid case, axis by axis"); a pair on the kernel's grid (one q
 // for all axes) passes it. `mag`: each axis' largest |coordinate| (box_magnitudes, finite input).
 inline bool on_grid(const double* c, const double (&mag)[3]) {
-  if (!(dmax(mag[0], dmax(mag[1], mag[2])) < 0x1p300)) return false;
-  // C_k from m_k's exponent bits, x and y in one register: the exponent plus 38, and the bit
-  // below the leading one
+  const Double2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]}, top = {0x1p300, 0x1p300}, least = {0x1p-344, 0x1p-344};
+  if ((lt2(mxy, top) & lt2(mz, top)) != 3u) return false;  // one branch; false for NaN
+  // C_k from max(m_k, 2^-344)'s exponent bits, x and y in one register: the exponent plus 38, and
+  // the bit below the leading one
   const Long2 exponent = {0x7ff0000000000000ll, 0x7ff0000000000000ll}, up = {38ll << 52, 38ll << 52},
               half = {1ll << 51, 1ll << 51};
-  const Double2 least = {0x1p-344, 0x1p-344};
-  Double2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]};
-  mxy = mxy > least ? mxy : least;
-  mz = mz > least ? mz : least;
-  const Double2 cxy = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(mxy) & exponent) + up) | half);
-  const Double2 cz = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(mz) & exponent) + up) | half);
+  const Double2 cxy = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(max2(mxy, least)) & exponent) + up) | half);
+  const Double2 cz = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(max2(mz, least)) & exponent) + up) | half);
   // two coordinates at a time, read once: x y | z x | y z, three times over
   const Double2 big2[3] = {cxy, Double2{cz[0], cxy[0]}, Double2{cxy[1], cz[0]}};
   Long2 grid = {-1, -1};
@@ -226,7 +231,7 @@ inline bool on_grid(const double* c, const double (&mag)[3]) {
     std::memcpy(&v, c + 2 * i, sizeof v);
     grid &= (v + big2[i % 3]) - big2[i % 3] == v;
   }
-  return (grid[0] & grid[1]) != 0;
+  return all2(grid);
 }
 
 // The pair's grid test and its shared integer conversion, each evaluated at most once per pair
@@ -304,8 +309,10 @@ template <bool kRelation>
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
-  if (!finite_after_filter(c, ps)) return solve<kRelation>(pair, route);  // declines
+  // the comparisons need no finiteness, their answer does (algorithms/exact/README.md, "The grid
+  // test first: finiteness, flat pairs and the signs from it")
   if (const unsigned bits = shared_vertices<!kRelation>(c, shared_candidates(ps.open)); bits != 0u) {
+    if (!finite_after_filter(c, ps)) return solve<kRelation>(pair, route);  // declines
     const Relation rel = kRelation ? shared_relation(bits, ps) : Relation::touch_point;  // a common point
     if (rel != Relation::unsupported) {
       if (route) *route = Route::shared;
@@ -313,18 +320,25 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
     }
   }
   LazyGrid g{c, ps.box, grid ? 1 : -1};
+  // a value within the bound needs the grid test: made here, a pass proves the coordinates finite
+  if (!(!grid && ps.open != 0u && g.on()) && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
   const double b = ps.bound;
-  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
-  // (coplanar.hpp); degenerate input goes on to the classification. Six points on one
-  // axis-parallel plane prove the zeros without arithmetic (their values are computed zeros).
-  const bool flat = (ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c);
+  // every value certain or exact (on the grid): the six signs are the values' own
+  const bool exact = (ps.open == 0u) | (g.state == 1);
   int known[6];
-  // a value within the bound: on the grid its own sign; off it, against a triangle in an
-  // axis-parallel plane, comparisons and one o2 (no integer conversion)
-  if (flat)
-    known[0] = known[1] = known[2] = 0;
-  else if (!((ps.open & 7u) != 0u && !g.on() && axis_plane_signs(c + 9, c, known)))
-    for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
+  if (exact) {
+    value_signs(ps.s1, ps.s2, known);
+  } else {
+    // off the grid: six points on one axis-parallel plane prove T1's zeros without arithmetic
+    // (their values are computed zeros); a value within the bound against a triangle in an
+    // axis-parallel plane by comparisons and one o2; else its exact sign one by one
+    if ((ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c))
+      known[0] = known[1] = known[2] = 0;
+    else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
+      for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
+  }
+  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
+  // (coplanar.hpp); degenerate input goes on to the classification.
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
   if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
     if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
@@ -334,7 +348,7 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   // the classification reads s2 only when both are proper, so zeros are its exact signs
   if (!any1)
     known[3] = known[4] = known[5] = 0;
-  else if (!((ps.open & 070u) != 0u && !g.on() && axis_plane_signs(c, c + 9, known + 3)))
+  else if (!exact && !((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
     for (int k = 0; k < 3; ++k) known[3 + k] = sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k);
   const bool any2 = (known[3] | known[4] | known[5]) != 0;
   if (any1 & any2) {  // both triangles proper, the planes distinct

@@ -38,6 +38,25 @@ inline unsigned le2(Double2 a, Double2 b) {
 #endif
 }
 
+// max(a, b) lane by lane as `a > b ? a : b` (b where either is NaN): maxpd on SSE2, where GCC
+// compiled the vector ternary as a comparison and three logical operations.
+inline Double2 max2(Double2 a, Double2 b) {
+#if defined(__SSE2__)
+  return reinterpret_cast<Double2>(_mm_max_pd(reinterpret_cast<__m128d>(a), reinterpret_cast<__m128d>(b)));
+#else
+  return a > b ? a : b;
+#endif
+}
+
+// Both lanes of a comparison mask true: one movmskpd on SSE2.
+inline bool all2(Long2 m) {
+#if defined(__SSE2__)
+  return _mm_movemask_pd(reinterpret_cast<__m128d>(m)) == 3;
+#else
+  return (m[0] & m[1]) != 0;
+#endif
+}
+
 // The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
 // and maxima by `<` / `>`: an unordered comparison keeps the running value).
 struct Box {
@@ -76,13 +95,8 @@ inline double bound_of_box(const Box& u) {
   const double ez = u.hi_z - u.lo_z;
   // `<=` is false for NaN: a NaN extent fails as before; all three tested in one branch
   if ((le2(e, most) | static_cast<unsigned>(ez <= bound::kMax3) << 2) != 7u) return __builtin_inf();
-  // dmax(e, kMin3) for x and y at once (e finite here): maxpd, which is e > least ? e : least
-  // lane by lane (GCC compiled the vector ternary as a comparison and three logical operations)
-#if defined(__SSE2__)
-  const Double2 m = reinterpret_cast<Double2>(_mm_max_pd(reinterpret_cast<__m128d>(e), reinterpret_cast<__m128d>(least)));
-#else
-  const Double2 m = e > least ? e : least;
-#endif
+  // dmax(e, kMin3) for x and y at once (e finite here): max2 is e > least ? e : least lane by lane
+  const Double2 m = max2(e, least);
   return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
 }
 

@@ -2011,3 +2011,93 @@ TEST(OnePair, BothPlanesInTwoLanesAreTheScalarValues) {
     EXPECT_EQ(d::kSplit[m], want) << m;
   }
 }
+
+// The grid test made first in `finish` stands for the finiteness test (README "The grid test
+// first: finiteness, flat pairs and the signs from it"): on-grid touching pairs with a NaN or an
+// infinity at any coordinate, or a NaN first on an axis with an infinity after it, never pass it,
+// and every path declines them. Seen failing with the magnitude test reading x and y only (an
+// infinite z then builds a tiny C_z and passes).
+TEST(FinishFront, TheGridTestRefusesNonFiniteInput) {
+  GenRng r(41);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<TrianglePair> bad;
+  for (int n = 0; n < 60; ++n) {
+    TrianglePair base = small_int_pair(r, 6);
+    base.t2[n % 3] = (base.t1[0] + base.t1[1]) * 0.5;  // a value within the bound
+    ASSERT_TRUE(pair_on_grid(base.t1[0].data()));
+    for (int k = 0; k < 18; ++k)
+      for (double v : {std::nan(""), inf, -inf}) {
+        TrianglePair p = base;
+        double* c = p.t1[0].data();
+        c[k] = v;
+        if (std::isnan(v) && k + 3 < 18) c[k + 3] = n % 2 ? inf : -inf;
+        EXPECT_FALSE(pair_on_grid(c)) << k << " " << v;
+        bad.push_back(p);
+      }
+  }
+  for (const TrianglePair& p : bad) {
+    ASSERT_EQ(ex::overlap(p), Overlap::unsupported);
+    ASSERT_EQ(ex::relation(p).relation, Relation::unsupported);
+  }
+}
+
+// value_signs against sgn, value by value, on values at and beside zero, tiny, huge, infinite and
+// NaN in every one of the six places. Seen failing with the middle register's lanes exchanged.
+TEST(FinishFront, ValueSignsAreTheSignsOfTheValues) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double pool[] = {0.0, -0.0, 0x1p-1074, -0x1p-1074, 1.0, -3.5, 0x1p1000, -0x1p1000, inf, -inf, std::nan("")};
+  GenRng r(43);
+  for (int n = 0; n < 20000; ++n) {
+    double s[6];
+    for (double& v : s) v = pool[r.integer(0, std::size(pool) - 1)];
+    int known[6];
+    ex::detail::value_signs(s, s + 3, known);
+    for (int k = 0; k < 6; ++k) ASSERT_EQ(known[k], ex::sgn(s[k])) << k << " " << s[k];
+  }
+}
+
+// all_nine_shared against the nine comparisons written again here: pairs with 0 to 3 common
+// vertices in every place, signed zeros (equal), both forms (every bit; the first only). Seen
+// failing with T2's vertex read from k / 3 instead of k % 3.
+TEST(FinishFront, TheUnrolledScanIsTheNineComparisons) {
+  GenRng r(47);
+  for (int n = 0; n < 20000; ++n) {
+    TrianglePair p = small_int_pair(r, 2);
+    for (int s = 0; s < n % 4; ++s) p.t2[r.integer(0, 2)] = p.t1[r.integer(0, 2)];
+    if (n % 5 == 0) p.t1[r.integer(0, 2)][r.integer(0, 2)] = -0.0;
+    const double* c = p.t1[0].data();
+    unsigned want = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (c[3 * i] == c[9 + 3 * j] && c[3 * i + 1] == c[10 + 3 * j] && c[3 * i + 2] == c[11 + 3 * j]) want |= 1u << (3 * i + j);
+    ASSERT_EQ(ex::detail::all_nine_shared<false>(c), want) << n;
+    ASSERT_EQ(ex::detail::all_nine_shared<true>(c), want & (~want + 1u)) << n;
+  }
+}
+
+// The coplanar step on the 3-D grid projects to (x, y) first (README "Coplanar pairs on the grid:
+// (x, y) first"): coplanar small-integer pairs in general planes, in planes x = c and y = c (T1's
+// n_z is zero: the normal's projection then) and z = c, touching at a vertex, along an edge or
+// overlapping, every order and axis, against the oracle. Seen failing with the projection taken
+// off the grid too (the step's first line without `g.state == 1`).
+TEST(FinishFront, CoplanarPairsOnTheGridInEveryPlaneAgreeWithTheOracle) {
+  GenRng r(53);
+  std::vector<TrianglePair> pairs;
+  for (int n = 0; n < 120; ++n) {
+    // points a + s·u + t·v of one plane: u, v small integer vectors, (s, t) small integers
+    const V a(r.integer(-4, 4), r.integer(-4, 4), r.integer(-4, 4));
+    V u(r.integer(-2, 2), r.integer(-2, 2), r.integer(-2, 2)), v(r.integer(-2, 2), r.integer(-2, 2), r.integer(-2, 2));
+    if (n % 3 == 1) u[2] = 0, v[2] = 0;                      // a plane z = c
+    if (n % 3 == 2) u[0] = 0, v[0] = 0, u[1] = 1, v[1] = 0;  // a plane x = c containing z
+    const auto at = [&](int s, int t) { return a + u * static_cast<double>(s) + v * static_cast<double>(t); };
+    TrianglePair p{tri(at(0, 0), at(4, 0), at(0, 4)), tri(at(r.integer(-2, 4), r.integer(-2, 4)), at(r.integer(-2, 4), r.integer(-2, 4)),
+                                                        at(r.integer(-2, 4), r.integer(-2, 4)))};
+    if (n % 4 == 1) p.t2[0] = p.t1[1];                        // a common vertex
+    if (n % 4 == 2) p.t2[0] = at(2, 0), p.t2[1] = at(2, 2);   // along T1's edges
+    pairs.push_back(p);
+  }
+  std::vector<TrianglePair> all;
+  for (const TrianglePair& p : pairs)
+    for (const auto& w : every_order_and_axis(p)) all.push_back(w);
+  expect_all_paths_agree(all, "coplanar on the grid");
+}
