@@ -90,7 +90,8 @@ inline constexpr auto kPick = [] {
 // values and the bound).
 template <bool kRelation>
 [[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
-  const Box b1 = box_of(c), b2 = box_of(c + 9);
+  Box b1, b2;
+  boxes_of(c, b1, b2);
   // step 0 (overlap level): the vertices' boxes apart -> disjoint. At the relation level the
   // answer could be `parallel` or `degenerate`, so there the bound comes first.
   if constexpr (!kRelation)

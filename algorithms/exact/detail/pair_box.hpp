@@ -79,6 +79,26 @@ inline Box box_of(const double* t) {
   return b;
 }
 
+// Coordinate i of both triangles in one register: lane 0 T1's (c[i]), lane 1 T2's (c[9 + i]).
+inline Double2 both_at(const double* c, int i) { return Double2{c[i], c[9 + i]}; }
+
+// The lanes exchanged (one shufpd on SSE2).
+inline Double2 swapped(Double2 a) { return __builtin_shufflevector(a, a, 1, 0); }
+
+// Both triangles' boxes: box_of's x and y, and z of both in one register (both_at), where each
+// box's z had been two scalar minima and maxima with a move per vertex; the same `<` / `>` lane by
+// lane (minpd and maxpd: `a < b ? a : b`), so the same values, NaN kept as box_of keeps it.
+inline void boxes_of(const double* c, Box& b1, Box& b2) {
+  b1 = box_of(c), b2 = box_of(c + 9);  // their z is overwritten below (and not computed)
+  Double2 lo = both_at(c, 2), hi = lo;
+  for (int v = 1; v < 3; ++v) {
+    const Double2 p = both_at(c, 3 * v + 2);
+    lo = p < lo ? p : lo;
+    hi = p > hi ? p : hi;
+  }
+  b1.lo_z = lo[0], b2.lo_z = lo[1], b1.hi_z = hi[0], b2.hi_z = hi[1];
+}
+
 // The box of both: minima and maxima by `<` / `>` (an unordered comparison keeps a's value).
 inline Box union_of(const Box& a, const Box& b) {
   return {b.lo < a.lo ? b.lo : a.lo, b.hi > a.hi ? b.hi : a.hi, b.lo_z < a.lo_z ? b.lo_z : a.lo_z,
@@ -144,15 +164,13 @@ inline bool finite18(const double* c) {
 // vertex k against π2, lane 1 T2's against π1; two normals for the instructions of one, and each
 // lane the scalar evaluation's operations, so the same values bit for bit.
 inline void plane_values(const double* c, Double2 (&s)[3]) {
-  const auto two = [c](int i) { return Double2{c[9 + i], c[i]}; };  // the plane's point i, lanes T2 | T1
-  const Double2 ax = two(0), ay = two(1), az = two(2);
-  const Double2 ux = two(3) - ax, uy = two(4) - ay, uz = two(5) - az;
-  const Double2 vx = two(6) - ax, vy = two(7) - ay, vz = two(8) - az;
-  const Double2 nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  for (int k = 0; k < 3; ++k) {
-    const Double2 x = {c[3 * k], c[9 + 3 * k]}, y = {c[3 * k + 1], c[10 + 3 * k]}, z = {c[3 * k + 2], c[11 + 3 * k]};
-    s[k] = ((x - ax) * nx + (y - ay) * ny) + (z - az) * nz;
-  }
+  const auto at = [c](int i) { return both_at(c, i); };  // vertex i / 3's coordinate i % 3, T1 | T2
+  const Double2 ux = at(3) - at(0), uy = at(4) - at(1), uz = at(5) - at(2);
+  const Double2 vx = at(6) - at(0), vy = at(7) - at(1), vz = at(8) - at(2);
+  // each triangle's normal in its own lane, then exchanged: lane 0 π2's, lane 1 π1's
+  const Double2 nx = swapped(uy * vz - uz * vy), ny = swapped(uz * vx - ux * vz), nz = swapped(ux * vy - uy * vx);
+  const Double2 ax = swapped(at(0)), ay = swapped(at(1)), az = swapped(at(2));
+  for (int k = 0; k < 3; ++k) s[k] = ((at(3 * k) - ax) * nx + (at(3 * k + 1) - ay) * ny) + (at(3 * k + 2) - az) * nz;
 }
 
 }  // namespace tritri::exact::detail
