@@ -59,22 +59,17 @@ inline bool certainly_slanted(const double s[3], double b) {
 }
 
 // The canonical order's six points for the sign bits `sp` (kSplit's order: T1's positive bits,
-// then T2's, each in 1..6): kPick[sp] = (p1, q1, r1, p2, q2, r2) as coordinate offsets. The lone
-// vertex is the one whose sign differs from the other two, and a triangle's flip (its lone
-// vertex negative) swaps q and r of the other, as in classify.hpp's `crossing`. One table row per
-// pair: the per-triangle rows and flip bits had cost about ten address computations.
+// then T2's, each in 1..6; every sign certain, so non-zero): kPick[sp] = (p1, q1, r1, p2, q2, r2)
+// as coordinate offsets, crossing.hpp's kCanon row for those signs, indexed by the filter's bits
+// directly. Rows of one-sided patterns are never read (the filter has exited).
 inline constexpr auto kPick = [] {
-  // (p, q, r) with the lone vertex first, per sign pattern: unflipped, then with q and r swapped
-  constexpr unsigned char kOrder[8][2][3] = {
-      {{0, 3, 6}, {0, 6, 3}}, {{0, 3, 6}, {0, 6, 3}}, {{3, 6, 0}, {3, 0, 6}}, {{6, 0, 3}, {6, 3, 0}},
-      {{6, 0, 3}, {6, 3, 0}}, {{3, 6, 0}, {3, 0, 6}}, {{0, 3, 6}, {0, 6, 3}}, {{0, 3, 6}, {0, 6, 3}}};
-  constexpr unsigned char kFlip[8] = {0, 0, 0, 1, 0, 1, 1, 1};  // the lone vertex negative
   std::array<std::array<unsigned char, 8>, 64> t{};
-  for (unsigned sp = 0; sp < 64; ++sp)
-    for (int k = 0; k < 3; ++k) {
-      t[sp][k] = kOrder[sp & 7u][kFlip[sp >> 3]][k];
-      t[sp][3 + k] = static_cast<unsigned char>(9 + kOrder[sp >> 3][kFlip[sp & 7u]][k]);
-    }
+  for (unsigned sp = 0; sp < 64; ++sp) {
+    int s1[3], s2[3];
+    for (unsigned k = 0; k < 3; ++k) s1[k] = (sp >> k & 1u) ? 1 : -1, s2[k] = (sp >> (3 + k) & 1u) ? 1 : -1;
+    const auto& row = kCanon[27 * sign_index(s1) + sign_index(s2)];
+    for (int k = 0; k < 6; ++k) t[sp][k] = row[k];
+  }
   return t;
 }();
 

@@ -136,8 +136,7 @@ inline bool either_one_sided(Double2 hi, Double2 lo, const Double2 (&s)[3]) {
 
 // The largest |coordinate| per axis of a box of finite coordinates: max(hi, -lo), exact.
 inline void box_magnitudes(const Box& u, double (&m)[3]) {
-  const Double2 a = -u.lo, h = u.hi;
-  const Double2 x = a > h ? a : h;
+  const Double2 x = max2(-u.lo, u.hi);
   m[0] = x[0], m[1] = x[1], m[2] = dmax(-u.lo_z, u.hi_z);
 }
 
