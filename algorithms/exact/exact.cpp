@@ -15,7 +15,7 @@ void relation_scalar_batch(const TrianglePair* pairs, std::size_t n, RelationAns
 }
 
 // The bench records, per pool, how far each pair got: the share the SIMD filter could not decide
-// is the cost of exactness (README.md, "Measurements: the 9-repetition bench").
+// is the cost of exactness (MEASUREMENTS.md, "Measurements: the 9-repetition bench").
 // The instruction set the batches ran on is named by a counter "isa:NAME" of 1.
 template <bool kSimd>
 CounterList path_counts() {
