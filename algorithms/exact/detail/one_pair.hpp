@@ -26,7 +26,6 @@
 #include "algorithms/exact/detail/coplanar.hpp"
 #include "algorithms/exact/detail/crossing.hpp"
 #include "algorithms/exact/detail/finish_front.hpp"
-#include "algorithms/exact/detail/own_bound.hpp"
 #include "algorithms/exact/detail/pair_box.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
 
@@ -241,7 +240,6 @@ struct LazyGrid {
   int ints = -1;
   double mag[3];
   intexact::PairInt61 x;
-  PlaneBounds planes;  // asked off the grid by a non-zero plane value (own_bound.hpp)
   bool on() {
     if (state < 0) state = on_grid(c, mag) ? 1 : 0;
     return state != 0;
@@ -257,15 +255,13 @@ struct LazyGrid {
 // value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
 // the grid the value is exact ("The grid case"); else the pair's shared integer conversion when
 // every axis fits, 40 bits in __int128 first ("Zeros off the grid, 40 bits per axis"), else 61
-// ("Zeros off the grid"); else the per-call filters and the integer engine; before those, a plane
-// value beyond its own triangle's bound (own_bound.hpp). (The certain case and a grid already
-// known inline, the rest out of line: most calls are one of those.)
+// ("Zeros off the grid"); else the per-call filters and the integer engine. (The certain case and
+// a grid already known inline, the rest out of line: most calls are one of those.)
 [[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
   if (g.on()) return sgn(v);  // the first value within the bound tests the grid
-  // a plane value (abc one triangle's vertices in order) against its own triangle's bound, no
-  // integer needed (own_bound.hpp); a computed 0 never passes it
-  if (v != 0.0 && (b == a + 1) & (cc == a + 2) & (a % 3 == 0) && std::fabs(v) > g.planes.of(g.c, g.mag, a)) return sgn(v);
-  return sign_o3_converted(g, a, b, cc, d);
+  if (const int i[6] = {a, b, a, cc, a, d}; g.converted())
+    return g.ints == 2 ? intexact::det3_pair40_sign(g.x, i) : intexact::det3_pair_sign(g.x, i);
+  return Filtered::o3(g.c + 3 * a, g.c + 3 * b, g.c + 3 * cc, g.c + 3 * d);
 }
 [[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, int a, int b, int cc, int d) {
   if (v > bound) return 1;
