@@ -4,7 +4,8 @@
 //
 //   flat        the six points share one coordinate exactly: T1's signs against π2 are zero
 //               without arithmetic (and the filter's values are then exact zeros);
-//   projection  drop the axis k of T1's largest computed normal component; both triangles'
+//   projection  (x, y) where every o2 there is exact (the 3-D grid, or (x, y) on the 2-D grid),
+//               else drop the axis k of T1's largest computed normal component; both triangles'
 //               orientations there (T1's n_k, T2's) must be exactly non-zero, which proves both
 //               proper and the pair coplanar; otherwise the caller classifies (degenerate input);
 //   values      the 18 edge values (each vertex against each edge line of the other triangle)
@@ -29,15 +30,10 @@ namespace tritri::exact::detail {
 // The lanes of v[0..n) are all multiples of 2^q with |x| < 2^(q + bits), q = e - (bits - 1) for
 // 2^e <= max|x| = m < 2^(e+1), and m lies in [lo, hi): fl(fl(x + C) - C) = x with C = 1.5·2^(q+52),
 // built from m's exponent bits (algorithms/exact/README.md, "The grid case", "The 2-D grid").
-// Finite input; hi at most 2^(1023 - 53 + bits) so that C is finite.
-inline bool on_grid_of(const Double2* v, int n, double lo, double hi, int bits) {
-  const Long2 no_sign = {0x7fffffffffffffffll, 0x7fffffffffffffffll};
-  Double2 m2 = {0.0, 0.0};
-  for (int k = 0; k < n; ++k) {
-    const Double2 a = reinterpret_cast<Double2>(reinterpret_cast<Long2>(v[k]) & no_sign);  // |x|
-    m2 = a > m2 ? a : m2;
-  }
-  const double m = dmax(m2[0], m2[1]);
+// `m` is the caller's max|x| over v[0..n), exactly (the pair's box gives it:
+// algorithms/exact/README.md, "Coplanar pairs off the 3-D grid: (x, y) first"). Finite input; hi
+// at most 2^(1023 - 53 + bits) so that C is finite.
+inline bool on_grid_of(const Double2* v, int n, double m, double lo, double hi, int bits) {
   if (!(m >= lo && m < hi)) return false;
   std::uint64_t b;
   std::memcpy(&b, &m, sizeof b);
@@ -47,14 +43,15 @@ inline bool on_grid_of(const Double2* v, int n, double lo, double hi, int bits) 
   const Double2 c = {big, big};
   Long2 all = (v[0] + c) - c == v[0];
   for (int k = 1; k < n; ++k) all &= (v[k] + c) - c == v[k];
-  return (all[0] & all[1]) != 0;
+  return all2(all);
 }
 
 // The 2-D grid test on the 12 projected coordinates (pass 2's grid2_lanes for one pair): m in
-// [2^-500, 2^500), 25 bits; then every o2 of them is exact in double.
-inline bool on_grid2(const Projected& p) {
+// [2^-500, 2^500), 25 bits; then every o2 of them is exact in double. `mag`: the pair's largest
+// |coordinate| per axis (one_pair.hpp's LazyGrid, from the filter's box of the six points).
+inline bool on_grid2(const Projected& p, const double (&mag)[3], int i, int j) {
   const Double2 v[6] = {p.i[0], p.i[1], p.i[2], p.j[0], p.j[1], p.j[2]};
-  return on_grid_of(v, 6, 0x1p-500, 0x1p500, 25);
+  return on_grid_of(v, 6, dmax(mag[i], mag[j]), 0x1p-500, 0x1p500, 25);
 }
 
 // The six points share one coordinate exactly (pass 2's flat_lanes for one pair; finite input).
@@ -180,15 +177,20 @@ bool coplanar_by_signs(const double* c, Grid& g, const CoplanarValues& cv, doubl
 // `out` set when both triangles are proper (then they are coplanar), false when a triangle's
 // orientation in the chosen projection is zero (a degenerate triangle, or a normal whose largest
 // computed component is exactly zero: the caller classifies). `Grid` is one_pair.hpp's LazyGrid:
-// state 1 when the pair is known to be on the 3-D grid; converted() and x, the pair's shared
-// integer conversion.
+// state 1 when the pair is known to be on the 3-D grid; mag, its largest |coordinate| per axis;
+// converted() and x, the pair's shared integer conversion.
 template <bool kRelation, class Grid>
 bool coplanar_known(const double* c, Grid& g, Relation& out) {
   const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
-  // on the 3-D grid every o2 is exact and any projection with both orientations non-zero decides
-  // (algorithms/exact/README.md, "Coplanar pairs on the grid: (x, y) first"): T1's normal only
-  // when an orientation in (x, y) is zero
-  if (g.state == 1 && coplanar_exact<kRelation>(c, project(t1, t2, 0, 1), out)) return true;
+  // on the 3-D grid, or with (x, y) on the 2-D grid, every o2 there is exact and any projection
+  // with both orientations non-zero decides: T1's normal only when that fails; off the 3-D grid
+  // (x, y) is tried first only for six points in one plane z = h, whose largest normal component
+  // is z (algorithms/exact/README.md, "Coplanar pairs off the 3-D grid: (x, y) first")
+  const auto flat_z = [c] { return (c[2] == c[5]) & (c[2] == c[8]) & (c[2] == c[11]) & (c[2] == c[14]) & (c[2] == c[17]); };
+  if (g.state == 1 || flat_z())
+    if (const Projected xy = project_xy(c);
+        (g.state == 1 || on_grid2(xy, g.mag, 0, 1)) && coplanar_exact<kRelation>(c, xy, out))
+      return true;
   const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
   const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
   const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
@@ -196,7 +198,7 @@ bool coplanar_known(const double* c, Grid& g, Relation& out) {
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
   const Projected p = project(t1, t2, i, j);
   // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
-  if (g.state == 1 || on_grid2(p)) return coplanar_exact<kRelation>(c, p, out);
+  if (g.state == 1 || on_grid2(p, g.mag, i, j)) return coplanar_exact<kRelation>(c, p, out);
   const CoplanarValues cv = coplanar_values(p);
   const double t = projected_bound(p);
   if (const int d = coplanar_certain(cv, t); d >= 0) {

@@ -9,6 +9,7 @@
 #include "algorithms/exact/detail/predicates.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace tritri::exact::detail {
 
@@ -20,6 +21,20 @@ struct Projected {
 inline Projected project(const P (&a)[3], const P (&b)[3], int i, int j) {
   Projected p;
   for (int v = 0; v < 3; ++v) p.i[v] = Double2{a[v][i], b[v][i]}, p.j[v] = Double2{a[v][j], b[v][j]};
+  return p;
+}
+
+// The projection (x, y) from the pair's 18 coordinates (T1's three points, then T2's): each
+// point's x and y in one load, then lane 0 T1's and lane 1 T2's by two unpacks; the values of
+// project(T1, T2, 0, 1), where GCC had built each register from two scalar loads.
+inline Projected project_xy(const double* c) {
+  Projected p;
+  for (int v = 0; v < 3; ++v) {
+    Double2 a, b;
+    std::memcpy(&a, c + 3 * v, sizeof a);
+    std::memcpy(&b, c + 9 + 3 * v, sizeof b);
+    p.i[v] = __builtin_shufflevector(a, b, 0, 2), p.j[v] = __builtin_shufflevector(a, b, 1, 3);
+  }
   return p;
 }
 

@@ -1,0 +1,170 @@
+// Unit tests of the coplanar step's (x, y) projection off the 3-D grid (detail/coplanar.hpp's
+// `coplanar_known`; algorithms/exact/README.md, "Coplanar pairs off the 3-D grid: (x, y) first"):
+// the 2-D grid test with m from the pair's box against the test written again here on the 12
+// coordinates themselves, and the one-pair and batch answers against the oracle on coplanar pairs
+// off the 3-D grid, touching or not, in planes whose (x, y) projection is on the 2-D grid, off
+// it, or degenerate.
+#include "algorithms/exact/exact.hpp"
+#include "cases/generator/exact_pairs.hpp"
+#include "cases/oracle/oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+using namespace tritri;
+using namespace exact_pairs;
+namespace ex = tritri::exact;
+namespace d = tritri::exact::detail;
+
+namespace {
+
+// The 2-D grid on the pair's (x, y) coordinates, from its definition: m = max |coordinate| in
+// [2^-500, 2^500), q = floor(log2 m) - 24, every coordinate an integer multiple of 2^q.
+bool grid2_reference(const TrianglePair& p) {
+  double m = 0.0;
+  for (const Triangle* t : {&p.t1, &p.t2})
+    for (const auto& v : t->v) m = std::max({m, std::fabs(v[0]), std::fabs(v[1])});
+  if (!(m >= 0x1p-500 && m < 0x1p500)) return false;
+  const int q = std::ilogb(m) - 24;
+  for (const Triangle* t : {&p.t1, &p.t2})
+    for (const auto& v : t->v)
+      for (int k = 0; k < 2; ++k) {
+        const double units = std::ldexp(v[k], -q);
+        if (units != std::trunc(units)) return false;
+      }
+  return true;
+}
+
+// One coordinate at scale 2^e: an integer of up to `bits` bits, a tie with another coordinate, a
+// signed zero, or an integer above 2^40 (a huge axis whose units the other axis must not set).
+double coordinate(GenRng& r, int e, int bits) {
+  switch (r.integer(0, 7)) {
+    case 0: return r.integer(0, 1) ? 0.0 : -0.0;
+    case 1: return std::ldexp(0x1p40 + static_cast<double>(r.integer(-3, 3)), e);
+    default: return std::ldexp(static_cast<double>(r.integer(-(1 << bits), 1 << bits)), e);
+  }
+}
+
+const std::array<double, 2> kEdge[3] = {{-61731223, -55978922}, {63032092, 64558602}, {16672788, 19769509}};
+
+// Points of a plane z = level + 2^-30 (a x + b y) (exactly, for |x|, |y| <= 1 at 2^-20 units and
+// |a|, |b| <= 2), or of the plane y = x with z free (its (x, y) projection degenerate).
+V in_plane(int kind, double x, double y, int a, int b) {
+  if (kind == 0) return V(x, y, 0.1);
+  if (kind == 1) return V(x, y, 1.0 + std::ldexp(a * x + b * y, -30));
+  return V(x, x, y + 0.1);
+}
+
+// Coplanar pairs off the 3-D grid: T2's first vertex on T1's vertex, on an edge's midpoint, an
+// edge of T2 on the line of T1's edge beyond it, or anywhere; coordinates at 2^-20 units.
+TrianglePair coplanar_off_grid(GenRng& r, int kind) {
+  auto pt = [&] {
+    return std::array<double, 2>{std::ldexp(2.0 * r.integer(-(1 << 19), 1 << 19), -20),
+                                 std::ldexp(2.0 * r.integer(-(1 << 19), 1 << 19), -20)};
+  };
+  std::array<double, 2> a = pt(), b = pt(), c = pt(), p = pt(), q = pt(), s = pt();
+  switch (r.integer(0, 3)) {
+    case 0: p = a; break;
+    case 1: p = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}; break;
+    case 2:
+      p = {2 * b[0] - a[0], 2 * b[1] - a[1]};
+      q = {3 * b[0] - 2 * a[0], 3 * b[1] - 2 * a[1]};
+      if (std::fabs(q[0]) > 1 || std::fabs(q[1]) > 1) q = pt();
+      break;
+    default: break;
+  }
+  const int ca = r.integer(-2, 2), cb = r.integer(-2, 2);
+  auto put = [&](const std::array<double, 2>& w) { return in_plane(kind, w[0], w[1], ca, cb); };
+  return {Triangle{{put(a), put(b), put(c)}}, Triangle{{put(p), put(q), put(s)}}};
+}
+
+std::vector<TrianglePair> all_orders(const TrianglePair& p) {
+  std::vector<TrianglePair> out;
+  int i[3] = {0, 1, 2};
+  do {
+    int j[3] = {0, 1, 2};
+    do {
+      const Triangle a{{p.t1[i[0]], p.t1[i[1]], p.t1[i[2]]}}, b{{p.t2[j[0]], p.t2[j[1]], p.t2[j[2]]}};
+      out.push_back({a, b});
+      out.push_back({b, a});
+    } while (std::next_permutation(j, j + 3));
+  } while (std::next_permutation(i, i + 3));
+  return out;
+}
+
+void expect_oracle(const std::vector<TrianglePair>& pairs, const char* what) {
+  std::vector<Overlap> ov(pairs.size());
+  std::vector<RelationAnswer> rel(pairs.size());
+  ex::overlap_batch(pairs.data(), pairs.size(), ov.data());
+  ex::relation_batch(pairs.data(), pairs.size(), rel.data());
+  for (std::size_t n = 0; n < pairs.size(); ++n) {
+    const OracleRecord o = oracle_label(pairs[n]);
+    const RelationAnswer a = ex::relation(pairs[n]);
+    ASSERT_EQ(a.relation, o.relation) << what << " #" << n << ": " << to_string(a.relation) << " vs "
+                                      << to_string(o.relation);
+    ASSERT_EQ(a.dimension, o.dimension) << what << " #" << n;
+    ASSERT_EQ(ex::overlap(pairs[n]) == Overlap::yes, o.overlap) << what << " #" << n;
+    ASSERT_EQ(ov[n] == Overlap::yes, o.overlap) << what << " batch #" << n;
+    ASSERT_EQ(rel[n].relation, o.relation) << what << " batch #" << n;
+  }
+}
+
+}  // namespace
+
+// The 2-D grid test with m = max(mag[0], mag[1]) from the pair's box (box_magnitudes of the
+// filter's union of the triangles' boxes) decides as the test on the 12 coordinates themselves:
+// axes at scales 2^-40..2^40 apart, ties, signed zeros, an axis above 2^40 units. It fails with m
+// from x alone (mag[i] for max(mag[i], mag[j])).
+TEST(CoplanarXy, TheTwoDimensionalGridFromThePairsBoxIsTheDirectTest) {
+  GenRng r(61);
+  long on = 0, off = 0;
+  for (int n = 0; n < 200000; ++n) {
+    const int ex_ = r.integer(-40, 40), ey = r.integer(-40, 40), bits = r.integer(4, 30);
+    TrianglePair p;
+    for (Triangle* t : {&p.t1, &p.t2})
+      for (auto& v : t->v) v = V(coordinate(r, ex_, bits), coordinate(r, ey, bits), coordinate(r, 0, 8));
+    double mag[3];
+    const double* c = p.t1[0].data();
+    d::box_magnitudes(d::union_of(d::box_of(c), d::box_of(c + 9)), mag);
+    const bool got = d::on_grid2(d::project_xy(c), mag, 0, 1), want = grid2_reference(p);
+    ASSERT_EQ(got, want) << n;
+    (want ? on : off) += 1;
+  }
+  EXPECT_GT(on, 5000);
+  EXPECT_GT(off, 20000);
+}
+
+// Coplanar pairs off the 3-D grid decided in (x, y) when that projection is on the 2-D grid and
+// both orientations there are non-zero, else as before: flat pairs at z = 0.1, a plane near z =
+// 1 with 51-bit z, the plane y = x (its (x, y) orientations zero: the largest component's
+// projection), all against the oracle, one pair per call and in batches; and a flat pair one
+// unit of o2 outside an edge line at 26 bits (off the 2-D grid: rounded to 0 in double), in
+// every order and on every axis. It fails with (x, y) taken off the 3-D grid without the 2-D grid
+// test.
+TEST(CoplanarXy, PairsOffTheThreeDGridAgreeWithTheOracle) {
+  GenRng r(62);
+  for (int kind = 0; kind < 3; ++kind) {
+    std::vector<TrianglePair> pairs;
+    for (int n = 0; n < 400; ++n) pairs.push_back(coplanar_off_grid(r, kind));
+    for (int n = 0; n < 8; ++n)
+      for (const auto& v : all_orders(coplanar_off_grid(r, kind))) pairs.push_back(v);
+    expect_oracle(pairs, kind == 0 ? "flat" : kind == 1 ? "near z" : "y = x");
+  }
+  std::vector<TrianglePair> edge;
+  for (int k = 0; k < 3; ++k) {
+    auto put = [&](double x, double y) {
+      V v;
+      v[k] = 3, v[(k + 1) % 3] = x, v[(k + 2) % 3] = y;
+      return v;
+    };
+    const auto& [u, w, p] = kEdge;
+    const TrianglePair t{Triangle{{put(u[0], u[1]), put(w[0], w[1]), put(0, -33554432)}},
+                         Triangle{{put(p[0], p[1]), put(p[0], p[1] + 1000), put(p[0] - 1000, p[1])}}};
+    ASSERT_FALSE(oracle_label(t).overlap);
+    for (const auto& v : all_orders(t)) edge.push_back(v);
+  }
+  expect_oracle(edge, "one unit outside at 26 bits");
+}
