@@ -48,8 +48,6 @@ double coordinate(GenRng& r, int e, int bits) {
   }
 }
 
-const std::array<double, 2> kEdge[3] = {{-61731223, -55978922}, {63032092, 64558602}, {16672788, 19769509}};
-
 // Points of a plane z = level + 2^-30 (a x + b y) (exactly, for |x|, |y| <= 1 at 2^-20 units and
 // |a|, |b| <= 2), or of the plane y = x with z free (its (x, y) projection degenerate).
 V in_plane(int kind, double x, double y, int a, int b) {
@@ -79,20 +77,6 @@ TrianglePair coplanar_off_grid(GenRng& r, int kind) {
   const int ca = r.integer(-2, 2), cb = r.integer(-2, 2);
   auto put = [&](const std::array<double, 2>& w) { return in_plane(kind, w[0], w[1], ca, cb); };
   return {Triangle{{put(a), put(b), put(c)}}, Triangle{{put(p), put(q), put(s)}}};
-}
-
-std::vector<TrianglePair> all_orders(const TrianglePair& p) {
-  std::vector<TrianglePair> out;
-  int i[3] = {0, 1, 2};
-  do {
-    int j[3] = {0, 1, 2};
-    do {
-      const Triangle a{{p.t1[i[0]], p.t1[i[1]], p.t1[i[2]]}}, b{{p.t2[j[0]], p.t2[j[1]], p.t2[j[2]]}};
-      out.push_back({a, b});
-      out.push_back({b, a});
-    } while (std::next_permutation(j, j + 3));
-  } while (std::next_permutation(i, i + 3));
-  return out;
 }
 
 void expect_oracle(const std::vector<TrianglePair>& pairs, const char* what) {
@@ -155,14 +139,7 @@ TEST(CoplanarXy, PairsOffTheThreeDGridAgreeWithTheOracle) {
   }
   std::vector<TrianglePair> edge;
   for (int k = 0; k < 3; ++k) {
-    auto put = [&](double x, double y) {
-      V v;
-      v[k] = 3, v[(k + 1) % 3] = x, v[(k + 2) % 3] = y;
-      return v;
-    };
-    const auto& [u, w, p] = kEdge;
-    const TrianglePair t{Triangle{{put(u[0], u[1]), put(w[0], w[1]), put(0, -33554432)}},
-                         Triangle{{put(p[0], p[1]), put(p[0], p[1] + 1000), put(p[0] - 1000, p[1])}}};
+    const TrianglePair t = flat_pair_one_unit_apart(k);
     ASSERT_FALSE(oracle_label(t).overlap);
     for (const auto& v : all_orders(t)) edge.push_back(v);
   }

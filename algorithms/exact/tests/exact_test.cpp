@@ -611,20 +611,6 @@ std::vector<Named> branch_cases() {
   };
 }
 
-Triangle permuted(const Triangle& t, const std::array<int, 3>& o) { return {{t[o[0]], t[o[1]], t[o[2]]}}; }
-constexpr std::array<std::array<int, 3>, 6> kOrders{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-
-std::vector<TrianglePair> all_orders(const TrianglePair& p) {
-  std::vector<TrianglePair> out;
-  for (bool swap : {false, true})
-    for (const auto& o1 : kOrders)
-      for (const auto& o2 : kOrders) {
-        TrianglePair q{permuted(p.t1, o1), permuted(p.t2, o2)};
-        out.push_back(swap ? swapped(q) : q);
-      }
-  return out;
-}
-
 bool same(const RelationAnswer& a, const OracleRecord& o) { return a.relation == o.relation && a.dimension == o.dimension; }
 
 // One instruction set's batch answers (the scalar path's for Isa::scalar) on a list of pairs.
@@ -1432,18 +1418,10 @@ TEST(CoplanarPass2, TheTwoDimensionalGridIsExactAndTaken) {
     EXPECT_LT(st.scalar, 4096u / 50) << ex::to_string(isa) << ": only degenerate pairs go on";
   }
   expect_all_paths_agree(std::vector<TrianglePair>(flat.begin(), flat.begin() + 1024), "flat on the 2-D grid");
-  // 26 bits: o2(u, w, p) = +1 exactly, 0 in double; T1's third vertex on the other side, so T2
-  // (p and two points further out) is strictly outside: disjoint
-  const double u[2] = {-61731223, -55978922}, w[2] = {63032092, 64558602}, p[2] = {16672788, 19769509};
+  // one unit of o2 apart at 26 bits, rounded to 0 in double (exact_pairs.hpp), on every axis
   std::vector<TrianglePair> edge;
   for (int k = 0; k < 3; ++k) {
-    auto put = [&](double x, double y) {
-      V v;
-      v[k] = 3, v[(k + 1) % 3] = x, v[(k + 2) % 3] = y;
-      return v;
-    };
-    const TrianglePair t{Triangle{{put(u[0], u[1]), put(w[0], w[1]), put(0, -33554432)}},
-                         Triangle{{put(p[0], p[1]), put(p[0], p[1] + 1000), put(p[0] - 1000, p[1])}}};
+    const TrianglePair t = flat_pair_one_unit_apart(k);
     ASSERT_FALSE(oracle_label(t).overlap);
     for (const auto& v : all_orders(t)) edge.push_back(v);
   }

@@ -191,21 +191,6 @@ TrianglePair touching(GenRng& r) {
   return p;
 }
 
-// The pair in every order of its vertices (3! · 3! · 2).
-std::vector<TrianglePair> orders(const TrianglePair& p) {
-  std::vector<TrianglePair> out;
-  int i[3] = {0, 1, 2};
-  do {
-    int j[3] = {0, 1, 2};
-    do {
-      const Triangle a{{p.t1[i[0]], p.t1[i[1]], p.t1[i[2]]}}, b{{p.t2[j[0]], p.t2[j[1]], p.t2[j[2]]}};
-      out.push_back({a, b});
-      out.push_back({b, a});
-    } while (std::next_permutation(j, j + 3));
-  } while (std::next_permutation(i, i + 3));
-  return out;
-}
-
 }  // namespace
 
 TEST(Crossing, TouchingPairsInEveryOrderAgreeWithTheOracle) {
@@ -216,7 +201,7 @@ TEST(Crossing, TouchingPairsInEveryOrderAgreeWithTheOracle) {
   GenRng r(43);
   long checked = 0, touch = 0;
   for (int n = 0; n < 150; ++n)
-    for (const TrianglePair& p : orders(touching(r))) {
+    for (const TrianglePair& p : all_orders(touching(r))) {
       const OracleRecord o = oracle_label(p);
       const RelationAnswer a = ex::relation(p);
       ASSERT_EQ(a.relation, o.relation) << n << ": " << to_string(a.relation) << " vs " << to_string(o.relation);
