@@ -32,6 +32,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 namespace tritri::exact::detail {
 
@@ -208,6 +209,7 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // 2 yes in 40 bits). The largest |coordinate| per axis comes from the filter's box (finite: exact).
 struct LazyGrid {
   LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) { box_magnitudes(box, mag); }
+  LazyGrid(const double* pair, const double (&m)[3], int grid) : c(pair), state(grid), mag{m[0], m[1], m[2]} {}
   const double* c;
   int state;
   int ints = -1;
@@ -254,7 +256,7 @@ template <bool kRelation>
   return true;
 }
 
-// `finish` after the shortcuts and, where it was made, the grid test (`state`: 1 passed, 0 failed,
+// `finish` after the shortcuts and, where it was made, the grid test (`g.state`: 1 passed, 0 failed,
 // -1 not made; `grid`: known to pass from pass 2): the finiteness test unless the grid test
 // proved it, then the six plane signs made exact (the values' own when each is certain or exact,
 // given in `sb` after that test, which also means the coplanar step was made; else resolved one
@@ -262,12 +264,11 @@ template <bool kRelation>
 // crossing decided here; the rest (coplanar, degenerate, parallel candidates) by the
 // classification with those signs. Out of line: `finish` decides most touching pairs without it.
 template <bool kRelation>
-[[gnu::noinline]] RelationAnswer finish_rest(const TrianglePair& pair, const PairSigns& ps, bool grid, int state,
+[[gnu::noinline]] RelationAnswer finish_rest(const TrianglePair& pair, const PairSigns& ps, bool grid, LazyGrid&& g,
                                              SignBits sb, Route* route) {
   const double* c = pair.t1[0].data();
-  LazyGrid g{c, ps.box, state};
   // the grid test made by `finish` passed: the coordinates are finite and `sb` holds the signs
-  const bool tested = !grid && state == 1;
+  const bool tested = !grid && g.state == 1;
   if (!tested && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
   const double b = ps.bound;
   // every value certain or exact (on the grid): the six signs are the values' own; else T1's three
@@ -328,7 +329,7 @@ template <bool kRelation>
 [[gnu::noinline]] RelationAnswer coplanar_on_grid(const TrianglePair& pair, const PairSigns& ps, SignBits sb, Route* route) {
   LazyGrid g{pair.t1[0].data(), ps.box, 1};
   if (RelationAnswer out; coplanar_step<kRelation>(pair.t1[0].data(), g, route, out)) return out;
-  return finish_rest<kRelation>(pair, ps, false, 1, sb, route);
+  return finish_rest<kRelation>(pair, ps, false, std::move(g), sb, route);
 }
 
 // After an undecided filter (`grid`: the pair is known to pass the grid test, so plain double is
@@ -356,7 +357,8 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   if (!grid && ps.open != 0u) {
     double mag[3];
     box_magnitudes(ps.box, mag);
-    if (!on_grid(c, mag)) return finish_rest<kRelation>(pair, ps, grid, 0, SignBits{0, 0}, route);
+    // (the magnitudes made here serve `finish_rest`)
+    if (!on_grid(c, mag)) return finish_rest<kRelation>(pair, ps, grid, LazyGrid{c, mag, 0}, SignBits{0, 0}, route);
     const SignBits sb = value_sign_bits(ps.s1, ps.s2);
     const unsigned e1 = tri_code(sb.pos, sb.neg, false), e2 = tri_code(sb.pos, sb.neg, true);
     if (!((e1 | e2) & (kOneSided | kAllZero))) {  // both proper, neither one-sided: planes crossing
@@ -365,9 +367,9 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
       return answer_with(crossing_known<kRelation>(c, 27 * e1 + e2, ~(sb.pos | sb.neg) & 63u, ps.bound, exact_sign));
     }
     if (e1 & kAllZero) return coplanar_on_grid<kRelation>(pair, ps, sb, route);
-    return finish_rest<kRelation>(pair, ps, grid, 1, sb, route);
+    return finish_rest<kRelation>(pair, ps, grid, LazyGrid{c, mag, 1}, sb, route);
   }
-  return finish_rest<kRelation>(pair, ps, grid, state, SignBits{0, 0}, route);
+  return finish_rest<kRelation>(pair, ps, grid, LazyGrid{c, ps.box, state}, SignBits{0, 0}, route);
 }
 
 // One pair: the filter, then `finish`.

@@ -277,8 +277,8 @@ TEST(OnTheGrid, CrossingAtOnceIsTheGeneralPath) {
     const d::SignBits sb = state == 1 ? d::value_sign_bits(ps.s1, ps.s2) : d::SignBits{0, 0};
     d::Route fast = d::Route::filter, rest = d::Route::filter;
     const RelationAnswer a = d::finish<true>(p, ps, false, &fast);
-    const RelationAnswer b = d::finish_rest<true>(p, ps, false, state, sb, &rest);
-    const RelationAnswer g = d::finish_rest<true>(p, ps, false, -1, d::SignBits{0, 0}, nullptr);
+    const RelationAnswer b = d::finish_rest<true>(p, ps, false, d::LazyGrid{c, ps.box, state}, sb, &rest);
+    const RelationAnswer g = d::finish_rest<true>(p, ps, false, d::LazyGrid{c, ps.box, -1}, d::SignBits{0, 0}, nullptr);
     ASSERT_EQ(a.relation, b.relation) << compared;
     ASSERT_EQ(a.dimension, b.dimension) << compared;
     ASSERT_EQ(a.relation, g.relation) << compared;
@@ -289,7 +289,8 @@ TEST(OnTheGrid, CrossingAtOnceIsTheGeneralPath) {
     d::PairSigns po;
     if (d::filter_pair<false>(c, po) < 0) {
       const bool meet = d::meets(d::finish<false>(p, po, false, nullptr));
-      ASSERT_EQ(meet, d::meets(d::finish_rest<false>(p, po, false, -1, d::SignBits{0, 0}, nullptr))) << compared;
+      ASSERT_EQ(meet, d::meets(d::finish_rest<false>(p, po, false, d::LazyGrid{c, po.box, -1}, d::SignBits{0, 0}, nullptr)))
+          << compared;
       ASSERT_EQ(meet, o.overlap) << compared;
     }
     const unsigned e = d::tri_code(sb.pos, sb.neg, false) | d::tri_code(sb.pos, sb.neg, true);
