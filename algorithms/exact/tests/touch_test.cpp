@@ -214,3 +214,77 @@ TEST(Crossing, TouchingPairsInEveryOrderAgreeWithTheOracle) {
   EXPECT_GT(touch, 2000);
 }
 
+
+TEST(OnTheGrid, TriCodesAreTheTriplesIndexAndKind) {
+  // every sign triple as bits: kTriCode's index is 9(s0 + 1) + 3(s1 + 1) + (s2 + 1), its flags the
+  // one-sided and all-zero triples written again here; tri_code reads T1's and T2's three of six;
+  // 27 e1 + e2 is kCanon's index for every allowed pair. It fails with kOneSided left off the
+  // all-negative triple, or with T2's negative bits read at bits 0..2.
+  for (int a = 0; a < 27; ++a) {
+    int s[3];
+    triple(a, s);
+    unsigned pos = 0, neg = 0;
+    for (int k = 0; k < 3; ++k) pos |= (s[k] > 0 ? 1u : 0u) << k, neg |= (s[k] < 0 ? 1u : 0u) << k;
+    const unsigned e = d::kTriCode[pos | neg << 3];
+    EXPECT_EQ(e & 31u, static_cast<unsigned>(9 * (s[0] + 1) + 3 * (s[1] + 1) + (s[2] + 1))) << a;
+    const bool one = (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
+    EXPECT_EQ((e & d::kOneSided) != 0u, one) << a;
+    EXPECT_EQ((e & d::kAllZero) != 0u, s[0] == 0 && s[1] == 0 && s[2] == 0) << a;
+    for (int b = 0; b < 27; ++b) {
+      int t[3];
+      triple(b, t);
+      unsigned pos2 = 0, neg2 = 0;
+      for (int k = 0; k < 3; ++k) pos2 |= (t[k] > 0 ? 1u : 0u) << (3 + k), neg2 |= (t[k] < 0 ? 1u : 0u) << (3 + k);
+      ASSERT_EQ(d::tri_code(pos | pos2, neg | neg2, false), e) << a << " " << b;
+      const unsigned e2 = d::tri_code(pos | pos2, neg | neg2, true);
+      ASSERT_EQ(e2 & 31u, static_cast<unsigned>(b)) << a << " " << b;
+      if (allowed(s) && allowed(t)) ASSERT_EQ(27 * e + e2, static_cast<unsigned>(27 * a + b));
+    }
+  }
+}
+
+TEST(OnTheGrid, CrossingAtOnceIsTheGeneralPath) {
+  // `finish` (its crossing step on the grid at once) against `finish_rest` given the same grid test
+  // and signs (its crossing step with sign_o3 on the lazy grid) and against `finish_rest` with the
+  // grid test not made (finiteness, the signs one by one) on every pair the filter leaves: touching
+  // pairs in every order, on and off the grid, and small-integer pairs: the same answer (and route,
+  // given the same test) at both levels, and the oracle's. It fails with the row's two triples
+  // exchanged in `finish`, or T2's zero bits dropped from its `zeros`.
+  GenRng r(53);
+  long compared = 0, at_once = 0;
+  const auto check = [&](const TrianglePair& p) {
+    const double* c = p.t1[0].data();
+    d::PairSigns ps;
+    if (d::filter_pair<true>(c, ps) >= 0) return;
+    double mag[3];
+    d::box_magnitudes(ps.box, mag);
+    const int state = ps.open != 0u && d::finite18(c) ? (d::on_grid(c, mag) ? 1 : 0) : -1;
+    const d::SignBits sb = state == 1 ? d::value_sign_bits(ps.s1, ps.s2) : d::SignBits{0, 0};
+    d::Route fast = d::Route::filter, rest = d::Route::filter;
+    const RelationAnswer a = d::finish<true>(p, ps, false, &fast);
+    const RelationAnswer b = d::finish_rest<true>(p, ps, false, d::LazyGrid{c, ps.box, state}, sb, &rest);
+    const RelationAnswer g = d::finish_rest<true>(p, ps, false, d::LazyGrid{c, ps.box, -1}, d::SignBits{0, 0}, nullptr);
+    ASSERT_EQ(a.relation, b.relation) << compared;
+    ASSERT_EQ(a.dimension, b.dimension) << compared;
+    ASSERT_EQ(a.relation, g.relation) << compared;
+    ASSERT_EQ(a.dimension, g.dimension) << compared;
+    if (fast != d::Route::shared) ASSERT_EQ(fast, rest) << compared;
+    const OracleRecord o = oracle_label(p);
+    ASSERT_EQ(a.relation, o.relation) << compared << ": " << to_string(a.relation) << " vs " << to_string(o.relation);
+    d::PairSigns po;
+    if (d::filter_pair<false>(c, po) < 0) {
+      const bool meet = d::meets(d::finish<false>(p, po, false, nullptr));
+      ASSERT_EQ(meet, d::meets(d::finish_rest<false>(p, po, false, d::LazyGrid{c, po.box, -1}, d::SignBits{0, 0}, nullptr)))
+          << compared;
+      ASSERT_EQ(meet, o.overlap) << compared;
+    }
+    const unsigned e = d::tri_code(sb.pos, sb.neg, false) | d::tri_code(sb.pos, sb.neg, true);
+    at_once += state == 1 && !(e & (d::kOneSided | d::kAllZero));
+    ++compared;
+  };
+  for (int n = 0; n < 120; ++n)
+    for (const TrianglePair& p : all_orders(touching(r))) check(p);
+  for (int n = 0; n < 5000; ++n) check(small_int_pair(r, 2));
+  EXPECT_GT(compared, 8000) << compared;
+  EXPECT_GT(at_once, 4000) << at_once;
+}
