@@ -314,8 +314,8 @@ inline void lone_vertex(const int s[3], int& l, int& f) {
   l = e.l, f = e.f;
 }
 
-constexpr int zero_count(const int s[3]) { return (s[0] == 0) + (s[1] == 0) + (s[2] == 0); }
-constexpr bool one_sided(const int s[3]) {
+inline int zero_count(const int s[3]) { return (s[0] == 0) + (s[1] == 0) + (s[2] == 0); }
+inline bool one_sided(const int s[3]) {
   return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
 }
 

@@ -16,28 +16,6 @@ namespace tritri::exact::detail {
 // kLoneFlip's index of a triple of exact signs (each -1, 0 or 1): 9(s0 + 1) + 3(s1 + 1) + s2 + 1.
 constexpr int sign_index(const int s[3]) { return 9 * s[0] + 3 * s[1] + s[2] + 13; }
 
-// A sign triple given as bits (`code` = pos | neg << 3: bit k of pos / neg set where s_k > 0 / < 0,
-// never both) as one byte: its sign_index, plus kOneSided when the triple is one-sided and kAllZero
-// when all three are 0 (the triples crossing_known is not asked about). One look-up per triangle,
-// where the three ints had cost a comparison each per test and three multiply-adds for the index
-// (algorithms/exact/README.md, "On the grid, crossing planes at once").
-inline constexpr unsigned kOneSided = 32u, kAllZero = 64u;
-inline constexpr auto kTriCode = [] {
-  std::array<unsigned char, 64> t{};
-  for (unsigned code = 0; code < 64; ++code) {
-    const int s[3] = {int(code & 1u) - int(code >> 3 & 1u), int(code >> 1 & 1u) - int(code >> 4 & 1u),
-                      int(code >> 2 & 1u) - int(code >> 5 & 1u)};
-    t[code] = static_cast<unsigned char>(sign_index(s) | (one_sided(s) ? kOneSided : 0u) | (zero_count(s) == 3 ? kAllZero : 0u));
-  }
-  return t;
-}();
-
-// kTriCode of T1's (`second` false) or T2's triple among six signs as bits (bit k of pos / neg: T1's
-// vertex k for k < 3, T2's vertex k - 3 otherwise).
-inline unsigned tri_code(unsigned pos, unsigned neg, bool second) {
-  return second ? kTriCode[(pos >> 3) | (neg & 070u)] : kTriCode[(pos & 7u) | (neg & 7u) << 3];
-}
-
 // kCanon[27 sign_index(s1) + sign_index(s2)] = (p1, q1, r1, p2, q2, r2) as coordinate offsets
 // 3i of the pair's points i (T1's 0..2, T2's 3..5): each triangle's lone vertex first (kLoneFlip), then its
 // successors, q and r of one triangle exchanged when the other's lone vertex is negative. The
@@ -70,35 +48,6 @@ inline constexpr auto kCanon = [] {
   const Double2 vx = two(q1, r1, 0), vy = two(q1, r1, 1), vz = two(q1, r1, 2);
   const Double2 wx = two(p2, r2, 0), wy = two(p2, r2, 1), wz = two(p2, r2, 2);
   return (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
-}
-
-// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
-// proper, neither sign triple one-sided nor all zero, given as their kCanon row (`row`) and their
-// zeros (bit k: sign k is 0, T1's three then T2's): the canonical order by that row, G1 and G2 in
-// two lanes against the pair's bound (one branch per exit, as the filter's step 3; the values are
-// finite when B is, and no comparison with B = +inf holds), then their exact signs from `sign(v, a,
-// b, cc, d)`, the exact sign of o3 of the pair's points a, b, cc, d (0..5) given its value v in
-// det3_eval's shape (algorithms/exact/README.md, "Crossing planes from exact signs: one table row,
-// G1 and G2 in two lanes").
-template <bool kRelation, class Sign>
-[[gnu::always_inline]] inline Relation crossing_known(const double* c, unsigned row, unsigned zeros, double bound,
-                                                     Sign&& sign) {
-  const unsigned char* o = kCanon[row].data();
-  const Double2 gg = gd_lanes(c, o);
-  const double hi = dmax(gg[0], gg[1]);
-  if (hi > bound) return Relation::disjoint;
-  int g1 = -1, g2 = -1;  // both certainly negative unless a value is within the bound
-  if (!(hi < -bound)) {
-    g1 = sign(gg[0], o[0] / 3, o[1] / 3, o[3] / 3, o[4] / 3);
-    if (g1 > 0) return Relation::disjoint;
-    g2 = sign(gg[1], o[0] / 3, o[2] / 3, o[5] / 3, o[3] / 3);
-    if (g2 > 0) return Relation::disjoint;
-  }
-  if (!kRelation) return Relation::cross;  // meets
-  // p1 (offset o[0]) or p2 (o[3]) on the other plane: its sign is 0
-  if (g1 == 0 || g2 == 0 || (zeros >> (o[0] / 3) & 1u) || (zeros >> (o[3] / 3) & 1u)) return Relation::touch_point;
-  const bool edge_on_line = __builtin_popcount(zeros & 7u) == 2 || __builtin_popcount(zeros >> 3) == 2;
-  return edge_on_line ? Relation::touch_segment : Relation::cross;
 }
 
 }  // namespace tritri::exact::detail

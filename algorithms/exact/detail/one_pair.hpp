@@ -32,7 +32,6 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <utility>
 
 namespace tritri::exact::detail {
 
@@ -204,12 +203,38 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   return Relation::unsupported;
 }
 
+// The grid test axis by axis: each axis k its own unit 2^q_k, q_k = e_k - 14 for 2^e_k <= m_k <
+// 2^(e_k+1), m_k = max(the axis' largest |coordinate|, 2^-344) below 2^300, and every coordinate x
+// along k a multiple of 2^q_k: fl(fl(x + C_k) - C_k) = x with C_k = 1.5·2^(q_k+52) built from m_k's
+// exponent bits. Every monomial of a det3 or det2 of the pair's points takes one factor per axis,
+// so all of a value's terms share one unit and every value the filter computed is exact
+// (algorithms/exact/README.md, "The grid case, axis by axis"); a pair on the kernel's grid (one q
+// for all axes) passes it. `mag`: each axis' largest |coordinate| (box_magnitudes, finite input).
+inline bool on_grid(const double* c, const double (&mag)[3]) {
+  const Double2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]}, top = {0x1p300, 0x1p300}, least = {0x1p-344, 0x1p-344};
+  if ((lt2(mxy, top) & lt2(mz, top)) != 3u) return false;  // one branch; false for NaN
+  // C_k from max(m_k, 2^-344)'s exponent bits, x and y in one register: the exponent plus 38, and
+  // the bit below the leading one
+  const Long2 exponent = {0x7ff0000000000000ll, 0x7ff0000000000000ll}, up = {38ll << 52, 38ll << 52},
+              half = {1ll << 51, 1ll << 51};
+  const Double2 cxy = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(max2(mxy, least)) & exponent) + up) | half);
+  const Double2 cz = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(max2(mz, least)) & exponent) + up) | half);
+  // two coordinates at a time, read once: x y | z x | y z, three times over
+  const Double2 big2[3] = {cxy, Double2{cz[0], cxy[0]}, Double2{cxy[1], cz[0]}};
+  Long2 grid = {-1, -1};
+  for (int i = 0; i < 9; ++i) {
+    Double2 v;
+    std::memcpy(&v, c + 2 * i, sizeof v);
+    grid &= (v + big2[i % 3]) - big2[i % 3] == v;
+  }
+  return all2(grid);
+}
+
 // The pair's grid test and its shared integer conversion, each evaluated at most once per pair
 // and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes,
 // 2 yes in 40 bits). The largest |coordinate| per axis comes from the filter's box (finite: exact).
 struct LazyGrid {
   LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) { box_magnitudes(box, mag); }
-  LazyGrid(const double* pair, const double (&m)[3], int grid) : c(pair), state(grid), mag{m[0], m[1], m[2]} {}
   const double* c;
   int state;
   int ints = -1;
@@ -245,99 +270,38 @@ struct LazyGrid {
   return sign_o3_within(v, g, a, b, cc, d);
 }
 
-// The coplanar step: T1 in π2 (all three exact signs zero) is coplanar when both are proper,
-// decided in 2-D (coplanar.hpp); degenerate input is left to the classification (false).
+// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
+// proper, neither sign triple one-sided nor all zero: the canonical order by one kCanon row, G1
+// and G2 in two lanes against the pair's bound (one branch per exit, as the filter's step 3; the
+// values are finite when B is, and no comparison with B = +inf holds), then their exact signs
+// (algorithms/exact/README.md, "Crossing planes from exact signs: one table row, G1 and G2 in two
+// lanes").
 template <bool kRelation>
-[[gnu::always_inline]] inline bool coplanar_step(const double* c, LazyGrid& g, Route* route, RelationAnswer& out) {
-  Relation rel;
-  if (!coplanar_known<kRelation>(c, g, rel)) return false;
-  if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
-  out = answer_with(rel);
-  return true;
-}
-
-// `finish` after the shortcuts and, where it was made, the grid test (`g.state`: 1 passed, 0 failed,
-// -1 not made; `grid`: known to pass from pass 2): the finiteness test unless the grid test
-// proved it, then the six plane signs made exact (the values' own when each is certain or exact,
-// given in `sb` after that test, which also means the coplanar step was made; else resolved one
-// by one) and, when both triangles have a non-zero sign against the other's plane, one-sided or
-// crossing decided here; the rest (coplanar, degenerate, parallel candidates) by the
-// classification with those signs. Out of line: `finish` decides most touching pairs without it.
-template <bool kRelation>
-[[gnu::noinline]] RelationAnswer finish_rest(const TrianglePair& pair, const PairSigns& ps, bool grid, LazyGrid&& g,
-                                             SignBits sb, Route* route) {
-  const double* c = pair.t1[0].data();
-  // the grid test made by `finish` passed: the coordinates are finite and `sb` holds the signs
-  const bool tested = !grid && g.state == 1;
-  if (!tested && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
-  const double b = ps.bound;
-  // every value certain or exact (on the grid): the six signs are the values' own; else T1's three
-  // are made here and T2's below
-  const bool exact = (ps.open == 0u) | (g.state == 1);
-  if (exact && !tested) {
-    sb = value_sign_bits(ps.s1, ps.s2);
-  } else if (!exact) {
-    // off the grid: six points on one axis-parallel plane prove T1's zeros without arithmetic
-    // (their values are computed zeros); a value within the bound against a triangle in an
-    // axis-parallel plane by comparisons and one o2; else its exact sign one by one
-    int s1[3] = {0, 0, 0};
-    if (!((ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c)) &&
-        !((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, s1)))
-      for (int k = 0; k < 3; ++k) s1[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
-    sb = sign_bits(s1, 0);
+[[gnu::always_inline]] inline Relation crossing_known(const double* c, const int s1[3], const int s2[3], double bound,
+                                                     LazyGrid& g) {
+  const unsigned char* o = kCanon[27 * sign_index(s1) + sign_index(s2)].data();
+  const Double2 gg = gd_lanes(c, o);
+  const double hi = dmax(gg[0], gg[1]);
+  if (hi > bound) return Relation::disjoint;
+  int g1 = -1, g2 = -1;  // both certainly negative unless a value is within the bound
+  if (!(hi < -bound)) {
+    g1 = sign_o3(gg[0], bound, g, o[0] / 3, o[1] / 3, o[3] / 3, o[4] / 3);
+    if (g1 > 0) return Relation::disjoint;
+    g2 = sign_o3(gg[1], bound, g, o[0] / 3, o[2] / 3, o[5] / 3, o[3] / 3);
+    if (g2 > 0) return Relation::disjoint;
   }
-  // T1 in π2: the coplanar step (on the grid after `finish`'s test, `finish` has made it)
-  const unsigned e1 = tri_code(sb.pos, sb.neg, false);
-  if (RelationAnswer out; (e1 & kAllZero) && !tested && coplanar_step<kRelation>(c, g, route, out)) return out;
-  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
-  // the classification reads s2 only when both are proper, so zeros are its exact signs
-  if (e1 & kAllZero) {
-    sb = {0, 0};
-  } else if (!exact) {
-    int s2[3];
-    if (!((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, s2)))
-      for (int k = 0; k < 3; ++k) s2[k] = sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k);
-    const SignBits b2 = sign_bits(s2, 3);
-    sb.pos |= b2.pos, sb.neg |= b2.neg;
-  }
-  const unsigned e2 = tri_code(sb.pos, sb.neg, true);
-  if (!((e1 | e2) & kAllZero)) {  // both triangles proper, the planes distinct
-    const bool one1 = (e1 & kOneSided) != 0u, one2 = (e2 & kOneSided) != 0u;
-    if (!(one1 | one2) || !kRelation || !(one1 & one2)) {
-      if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
-      if (one1 | one2) return answer_with(Relation::disjoint);  // parallel planes: both one-sided
-      const auto exact_sign = [&](double v, int p, int q, int r, int t) { return sign_o3(v, b, g, p, q, r, t); };
-      return answer_with(crossing_known<kRelation>(c, 27 * e1 + e2, ~(sb.pos | sb.neg) & 63u, b, exact_sign));
-    }
-  }
-  int known[6];
-  signs_of_bits(sb, known);
-  Tri t1, t2;
-  double unused[18];
-  gather(pair, t1, t2, unused);
-  if (g.on()) {
-    if (route) *route = Route::grid;
-    return classify<Plain, kRelation>(t1, t2, known);
-  }
-  if (route) *route = Route::filtered;
-  return classify<Filtered, kRelation>(t1, t2, known);
-}
-
-// T1 in π2 on the grid (the test made by `finish` passed, `sb` the six signs): the coplanar step
-// without `finish_rest`'s set-up, which decides the rest (degenerate input).
-template <bool kRelation>
-[[gnu::noinline]] RelationAnswer coplanar_on_grid(const TrianglePair& pair, const PairSigns& ps, SignBits sb, Route* route) {
-  LazyGrid g{pair.t1[0].data(), ps.box, 1};
-  if (RelationAnswer out; coplanar_step<kRelation>(pair.t1[0].data(), g, route, out)) return out;
-  return finish_rest<kRelation>(pair, ps, false, std::move(g), sb, route);
+  if (!kRelation) return Relation::cross;  // meets
+  if (g1 == 0 || g2 == 0 || s1[o[0] / 3] == 0 || s2[o[3] / 3 - 3] == 0) return Relation::touch_point;
+  return (zero_count(s1) == 2 || zero_count(s2) == 2) ? Relation::touch_segment : Relation::cross;
 }
 
 // After an undecided filter (`grid`: the pair is known to pass the grid test, so plain double is
-// exact for it): non-finite input is declined; then the shared-vertex shortcuts; then, for a value
-// within the bound, the grid test, and on the grid crossing planes decided from the values' own
-// signs (algorithms/exact/README.md, "On the grid, crossing planes at once"); the rest by
-// `finish_rest`. Each step is proved in algorithms/exact/README.md, "Exact signs after the
-// filter". At the overlap level only the emptiness of the answer counts (classify.hpp).
+// exact for it): non-finite input is declined; then the shared-vertex shortcuts; then the six
+// plane signs made exact (the filter's certain ones kept, the others resolved one by one) and,
+// when both triangles have a non-zero sign against the other's plane, one-sided or crossing
+// decided here; the rest (coplanar, degenerate, parallel candidates) by the classification with
+// those signs. Each step is proved in algorithms/exact/README.md, "Exact signs after the filter".
+// At the overlap level only the emptiness of the answer counts (classify.hpp).
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
@@ -351,25 +315,55 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
       return answer_with(rel);
     }
   }
+  LazyGrid g{c, ps.box, grid ? 1 : -1};
   // a value within the bound needs the grid test: made here, a pass proves the coordinates finite
-  // and every value exact, so the six signs are the values' own
-  int state = grid ? 1 : -1;
-  if (!grid && ps.open != 0u) {
-    double mag[3];
-    box_magnitudes(ps.box, mag);
-    // (the magnitudes made here serve `finish_rest`)
-    if (!on_grid(c, mag)) return finish_rest<kRelation>(pair, ps, grid, LazyGrid{c, mag, 0}, SignBits{0, 0}, route);
-    const SignBits sb = value_sign_bits(ps.s1, ps.s2);
-    const unsigned e1 = tri_code(sb.pos, sb.neg, false), e2 = tri_code(sb.pos, sb.neg, true);
-    if (!((e1 | e2) & (kOneSided | kAllZero))) {  // both proper, neither one-sided: planes crossing
-      if (route) *route = Route::grid;
-      const auto exact_sign = [](double v, int, int, int, int) { return sgn(v); };  // on the grid: exact
-      return answer_with(crossing_known<kRelation>(c, 27 * e1 + e2, ~(sb.pos | sb.neg) & 63u, ps.bound, exact_sign));
-    }
-    if (e1 & kAllZero) return coplanar_on_grid<kRelation>(pair, ps, sb, route);
-    return finish_rest<kRelation>(pair, ps, grid, LazyGrid{c, mag, 1}, sb, route);
+  if (!(!grid && ps.open != 0u && g.on()) && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
+  const double b = ps.bound;
+  // every value certain or exact (on the grid): the six signs are the values' own
+  const bool exact = (ps.open == 0u) | (g.state == 1);
+  int known[6];
+  if (exact) {
+    value_signs(ps.s1, ps.s2, known);
+  } else {
+    // off the grid: six points on one axis-parallel plane prove T1's zeros without arithmetic
+    // (their values are computed zeros); a value within the bound against a triangle in an
+    // axis-parallel plane by comparisons and one o2; else its exact sign one by one
+    if ((ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c))
+      known[0] = known[1] = known[2] = 0;
+    else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
+      for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
   }
-  return finish_rest<kRelation>(pair, ps, grid, LazyGrid{c, ps.box, state}, SignBits{0, 0}, route);
+  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
+  // (coplanar.hpp); degenerate input goes on to the classification.
+  const bool any1 = (known[0] | known[1] | known[2]) != 0;
+  if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
+    if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
+    return answer_with(rel);
+  }
+  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
+  // the classification reads s2 only when both are proper, so zeros are its exact signs
+  if (!any1)
+    known[3] = known[4] = known[5] = 0;
+  else if (!exact && !((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
+    for (int k = 0; k < 3; ++k) known[3 + k] = sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k);
+  const bool any2 = (known[3] | known[4] | known[5]) != 0;
+  if (any1 & any2) {  // both triangles proper, the planes distinct
+    const bool one1 = one_sided(known), one2 = one_sided(known + 3);
+    if (!(one1 | one2) || !kRelation || !(one1 & one2)) {
+      if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
+      if (one1 | one2) return answer_with(Relation::disjoint);  // parallel planes: both one-sided
+      return answer_with(crossing_known<kRelation>(c, known, known + 3, b, g));
+    }
+  }
+  Tri t1, t2;
+  double unused[18];
+  gather(pair, t1, t2, unused);
+  if (g.on()) {
+    if (route) *route = Route::grid;
+    return classify<Plain, kRelation>(t1, t2, known);
+  }
+  if (route) *route = Route::filtered;
+  return classify<Filtered, kRelation>(t1, t2, known);
 }
 
 // One pair: the filter, then `finish`.
