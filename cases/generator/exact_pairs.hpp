@@ -7,10 +7,8 @@
 #include "cases/util/random.hpp"
 #include "tritri/geometry.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstdint>
-#include <vector>
 
 namespace tritri::exact_pairs {
 
@@ -98,22 +96,6 @@ inline TrianglePair wide_pair(GenRng& r) {
       for (int k = 0; k < 3; ++k)
         if (r.integer(0, 3) == 0) v[k] = std::ldexp(v[k] + r.uniform(-0.5, 0.5), static_cast<int>(r.integer(-1070, 1000)));
   return p;
-}
-
-// A triangle's vertices in each of their six orders (three rotations, three reflections).
-constexpr std::array<std::array<int, 3>, 6> kOrders{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-inline Triangle permuted(const Triangle& t, const std::array<int, 3>& o) { return {{t[o[0]], t[o[1]], t[o[2]]}}; }
-
-// The pair in all 72 orders: each triangle's six vertex orders, and T1 and T2 exchanged.
-inline std::vector<TrianglePair> all_orders(const TrianglePair& p) {
-  std::vector<TrianglePair> out;
-  for (bool swap : {false, true})
-    for (const auto& o1 : kOrders)
-      for (const auto& o2 : kOrders) {
-        const TrianglePair q{permuted(p.t1, o1), permuted(p.t2, o2)};
-        out.push_back(swap ? swapped(q) : q);
-      }
-  return out;
 }
 
 // A flat pair in the plane where axis k is 3, at 26 bits: o2(u, w, p) = +1 exactly but 0 in

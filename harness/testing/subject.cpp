@@ -67,24 +67,6 @@ bool general_position(const OracleRecord& r) {
   return r.relation == Relation::disjoint || r.relation == Relation::cross;
 }
 
-constexpr std::array<std::array<int, 3>, 6> kOrders{
-    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
-
-Triangle permuted(const Triangle& t, const std::array<int, 3>& o) { return {{t[o[0]], t[o[1]], t[o[2]]}}; }
-
-// The 72 orders of a pair: both argument orders times the six vertex orders of each triangle;
-// the first is the pair as given.
-std::vector<TrianglePair> every_order(const TrianglePair& pair) {
-  std::vector<TrianglePair> out;
-  for (bool swap : {false, true})
-    for (const auto& o1 : kOrders)
-      for (const auto& o2 : kOrders) {
-        const TrianglePair p{permuted(pair.t1, o1), permuted(pair.t2, o2)};
-        out.push_back(swap ? swapped(p) : p);
-      }
-  return out;
-}
-
 }  // namespace
 
 std::string paste_ready(const TrianglePair& pair) {

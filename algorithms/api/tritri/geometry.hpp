@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>  // cross()
 
 #include <array>
+#include <vector>
 
 namespace tritri {
 
@@ -42,5 +43,23 @@ PairT<To> cast(const PairT<From>& p) {
 }
 
 inline TrianglePair swapped(const TrianglePair& p) { return {p.t2, p.t1}; }
+
+// A triangle's vertices in each of their six orders: the identity, two rotations, three reflections.
+inline constexpr std::array<std::array<int, 3>, 6> kVertexOrders{
+    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+inline Triangle permuted(const Triangle& t, const std::array<int, 3>& o) { return {{t[o[0]], t[o[1]], t[o[2]]}}; }
+
+// The 72 orders of a pair: both argument orders times the six vertex orders of each triangle;
+// the first is the pair as given.
+inline std::vector<TrianglePair> every_order(const TrianglePair& pair) {
+  std::vector<TrianglePair> out;
+  for (bool swap : {false, true})
+    for (const auto& o1 : kVertexOrders)
+      for (const auto& o2 : kVertexOrders) {
+        const TrianglePair p{permuted(pair.t1, o1), permuted(pair.t2, o2)};
+        out.push_back(swap ? swapped(p) : p);
+      }
+  return out;
+}
 
 }  // namespace tritri

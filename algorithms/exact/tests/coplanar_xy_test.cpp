@@ -134,14 +134,14 @@ TEST(CoplanarXy, PairsOffTheThreeDGridAgreeWithTheOracle) {
     std::vector<TrianglePair> pairs;
     for (int n = 0; n < 400; ++n) pairs.push_back(coplanar_off_grid(r, kind));
     for (int n = 0; n < 8; ++n)
-      for (const auto& v : all_orders(coplanar_off_grid(r, kind))) pairs.push_back(v);
+      for (const auto& v : every_order(coplanar_off_grid(r, kind))) pairs.push_back(v);
     expect_oracle(pairs, kind == 0 ? "flat" : kind == 1 ? "near z" : "y = x");
   }
   std::vector<TrianglePair> edge;
   for (int k = 0; k < 3; ++k) {
     const TrianglePair t = flat_pair_one_unit_apart(k);
     ASSERT_FALSE(oracle_label(t).overlap);
-    for (const auto& v : all_orders(t)) edge.push_back(v);
+    for (const auto& v : every_order(t)) edge.push_back(v);
   }
   expect_oracle(edge, "one unit outside at 26 bits");
 }

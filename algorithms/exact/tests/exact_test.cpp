@@ -659,7 +659,7 @@ TEST(Classify, EveryBranchInEveryOrderMatchesTheOracleAndTheExpectation) {
     const OracleRecord o = oracle_label(c.pair);
     ASSERT_EQ(o.relation, c.relation) << c.name << ": the expectation is wrong";
     ASSERT_EQ(o.dimension, c.dimension) << c.name << ": the expectation is wrong";
-    const auto variants = all_orders(c.pair);
+    const auto variants = every_order(c.pair);
     expect_all_paths_agree(variants, c.name);
     // the same case scaled and translated: on the grid, off the grid (exact path), tiny, huge
     std::vector<TrianglePair> moved;
@@ -683,7 +683,7 @@ TEST(Classify, BuiltinCasesInAll72Orders) {
   for (const Case& c : cases) {
     const auto expected = parse_relation(*c.label("expect"));
     ASSERT_TRUE(expected);
-    const auto variants = all_orders(c.pair);
+    const auto variants = every_order(c.pair);
     for (const auto& v : variants) ASSERT_EQ(ex::relation(v).relation, *expected) << c.name;
     expect_all_paths_agree(variants, c.name);
   }
@@ -731,7 +731,7 @@ TEST(OnePair, BoxesApartAtTheRelationLevelStillNameTheRelation) {
   };
   std::vector<TrianglePair> all;
   for (const auto& p : pairs)
-    for (const auto& v : all_orders(p)) all.push_back(v);
+    for (const auto& v : every_order(p)) all.push_back(v);
   expect_all_paths_agree(all, "boxes apart");
 }
 
@@ -749,7 +749,7 @@ TEST(OnePair, ExactSignsAfterTheFilterAtTheirEdges) {
   base.push_back({kFloor, tri({0, 0, -0.0}, {4, 0, 0}, {1, -1, 2})}); // a hinge with a signed zero
   std::vector<TrianglePair> moved;
   for (const auto& b : base)
-    for (const auto& v : all_orders(b)) {
+    for (const auto& v : every_order(b)) {
       TrianglePair neg = v;  // every zero coordinate negative
       for (Triangle* t : {&neg.t1, &neg.t2})
         for (auto& w : t->v)
@@ -1218,7 +1218,7 @@ TEST(PassOne, TheFirstPlaneExitNeedsEveryLane) {
   };
   // crossing with six certain signs, the lone vertex above or below, at each index
   for (double up : {1.0, -1.0})
-    for (const auto& o : kOrders)
+    for (const auto& o : kVertexOrders)
       others.push_back({permuted(tri({1, 1, -up}, {2, 1, -up}, {1, 2, up}), o), kFloor});
   std::vector<TrianglePair> pairs;  // blocks of 16 (a whole number of blocks of every width)
   for (const TrianglePair& other : others)
@@ -1237,15 +1237,15 @@ TEST(PassOne, TheBoxExitTakesApartBoxesOnly) {
   const TrianglePair corner{t1, tri({2, 2, 3}, {4, 2, 3}, {2, 4, 3})};     // boxes share a corner, triangles apart
   std::vector<TrianglePair> pairs;
   for (const TrianglePair& p : {apart, touching, corner})
-    for (const TrianglePair& v : all_orders(p)) pairs.push_back(v);
+    for (const TrianglePair& v : every_order(p)) pairs.push_back(v);
   GenRng r(33);
   for (std::size_t i = pairs.size(); i > 1; --i) std::swap(pairs[i - 1], pairs[static_cast<std::size_t>(r.integer(0, static_cast<std::int64_t>(i) - 1))]);
   expect_all_paths_agree(pairs, "apart, touching and corner boxes");
 
   std::vector<TrianglePair> only_apart, only_touching;
   for (int i = 0; i < 64; ++i) {
-    only_apart.push_back(all_orders(apart)[static_cast<std::size_t>(i)]);
-    only_touching.push_back(all_orders(touching)[static_cast<std::size_t>(i)]);
+    only_apart.push_back(every_order(apart)[static_cast<std::size_t>(i)]);
+    only_touching.push_back(every_order(touching)[static_cast<std::size_t>(i)]);
   }
   for (ex::Isa isa : kIsas) {
     if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
@@ -1345,7 +1345,7 @@ TEST(CoplanarOnePair, EveryRouteAgreesWithTheOracle) {
     std::vector<TrianglePair> all;
     for (std::size_t i = 0; i < set->size(); ++i)
       if (i >= 300 || set == &wide) {
-        for (const auto& v : all_orders((*set)[i])) all.push_back(v);
+        for (const auto& v : every_order((*set)[i])) all.push_back(v);
       } else {
         all.push_back((*set)[i]);
       }
@@ -1383,7 +1383,7 @@ TEST(CoplanarOnePair, AVertexInsideTheOtherIsDecidedFirst) {
     TrianglePair pair;
     pair.t1 = Triangle{{in_frame(f, 0, 0), in_frame(f, 12, 0), in_frame(f, 0, 12)}};
     pair.t2 = Triangle{{in_frame(f, p[0], p[1]), in_frame(f, q[0], q[1]), in_frame(f, s[0], s[1])}};
-    for (const auto& v : all_orders(pair)) {
+    for (const auto& v : every_order(pair)) {
       all.push_back(v);
       all.push_back(translated(v, V(std::ldexp(1.0, 20), -std::ldexp(1.0, 20), std::ldexp(1.0, 20))));
     }
@@ -1423,7 +1423,7 @@ TEST(CoplanarPass2, TheTwoDimensionalGridIsExactAndTaken) {
   for (int k = 0; k < 3; ++k) {
     const TrianglePair t = flat_pair_one_unit_apart(k);
     ASSERT_FALSE(oracle_label(t).overlap);
-    for (const auto& v : all_orders(t)) edge.push_back(v);
+    for (const auto& v : every_order(t)) edge.push_back(v);
   }
   expect_all_paths_agree(edge, "one unit outside at 26 bits");
 }
@@ -1445,7 +1445,7 @@ TrianglePair rotated_axes(const TrianglePair& p, int shift) {
 std::vector<TrianglePair> every_order_and_axis(const TrianglePair& p) {
   std::vector<TrianglePair> out;
   for (int shift = 0; shift < 3; ++shift)
-    for (const auto& v : all_orders(rotated_axes(p, shift))) out.push_back(v);
+    for (const auto& v : every_order(rotated_axes(p, shift))) out.push_back(v);
   return out;
 }
 
@@ -1778,7 +1778,7 @@ TEST(GridAxisByAxis, TouchingPairsScaledPerAxisAreDecidedOnIt) {
   std::vector<TrianglePair> pairs;
   for (const Named& n : branch_cases())
     for (const auto& s : scales)
-      for (const auto& v : all_orders(n.pair)) {
+      for (const auto& v : every_order(n.pair)) {
         TrianglePair p = v;
         for (Triangle* t : {&p.t1, &p.t2})
           for (auto& w : t->v)

@@ -201,7 +201,7 @@ TEST(Crossing, TouchingPairsInEveryOrderAgreeWithTheOracle) {
   GenRng r(43);
   long checked = 0, touch = 0;
   for (int n = 0; n < 150; ++n)
-    for (const TrianglePair& p : all_orders(touching(r))) {
+    for (const TrianglePair& p : every_order(touching(r))) {
       const OracleRecord o = oracle_label(p);
       const RelationAnswer a = ex::relation(p);
       ASSERT_EQ(a.relation, o.relation) << n << ": " << to_string(a.relation) << " vs " << to_string(o.relation);
