@@ -27,6 +27,7 @@
 #include "algorithms/exact/detail/crossing.hpp"
 #include "algorithms/exact/detail/finish_front.hpp"
 #include "algorithms/exact/detail/pair_box.hpp"
+#include "algorithms/exact/detail/plane_bound.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
 
 #include <array>
@@ -331,7 +332,8 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
     if ((ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c))
       known[0] = known[1] = known[2] = 0;
     else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
-      for (int k = 0; k < 3; ++k) known[k] = sign_o3(ps.s1[k], b, g, 3, 4, 5, k);
+      for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
+        known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);  // t: π2's own bound for a small T2 (plane_bound.hpp)
   }
   // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
   // (coplanar.hpp); degenerate input goes on to the classification.
@@ -345,7 +347,8 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   if (!any1)
     known[3] = known[4] = known[5] = 0;
   else if (!exact && !((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
-    for (int k = 0; k < 3; ++k) known[3 + k] = sign_o3(ps.s2[k], b, g, 0, 1, 2, 3 + k);
+    for (const double t = plane_bound(c, ps.box, b, ps.open, 070u); const int k : {0, 1, 2})
+      known[3 + k] = sign_o3(ps.s2[k], t, g, 0, 1, 2, 3 + k);
   const bool any2 = (known[3] | known[4] | known[5]) != 0;
   if (any1 & any2) {  // both triangles proper, the planes distinct
     const bool one1 = one_sided(known), one2 = one_sided(known + 3);
