@@ -29,13 +29,15 @@ inline double own_plane_bound(const double* t, const Box& pair) {
 }
 
 // The bound for the three values against the plane of the triangle at `t`: its own when `open`
-// (PairSigns::open) has exactly the three bits `three` (007: T1's values against π2, t = T2;
-// 070: T2's against π1, t = T1), else the pair's B. Exactly those bits: a value against the other
-// plane is beyond B, so B is finite, and the plane triangle is small, or thin, beside the pair
-// (coplanar and nearly coplanar pairs of like-sized triangles have all six within B).
+// (PairSigns::open) has the three bits `three` (007: T1's values against π2, t = T2; 070: T2's
+// against π1, t = T1) and not all three of the other plane's, else the pair's B. Then a value
+// against the other plane is beyond B, so B is finite, and the plane triangle is small, or thin,
+// beside the pair (coplanar and nearly coplanar pairs of like-sized triangles have all six within
+// B, touching pairs one or two against a plane).
 [[gnu::always_inline]] inline double plane_bound(const double* t, const Box& pair, double b, unsigned open,
                                                  unsigned three) {
-  return (open & 077u) == three ? own_plane_bound(t, pair) : b;
+  const unsigned certain = ~open & 077u;  // some, and none of `three`
+  return (certain != 0u) & ((certain & three) == 0u) ? own_plane_bound(t, pair) : b;
 }
 
 }  // namespace tritri::exact::detail

@@ -166,9 +166,9 @@ TEST(TinyAgainstHuge, APlanesOwnBoundGivesGmpsSign) {
   // plane_bound.hpp (algorithms/exact/README.md, "A plane's own bound: a small plane triangle"):
   // every plane value (plane_values, both lanes) beyond its plane's own bound has GMP's sign, on
   // tiny pairs in either order, and the bound decides a third or more of those within the pair's
-  // B; plane_bound asks it only for `open` with exactly the plane's three bits. It fails with the
-  // pair's extents E replaced by the plane triangle's own e in own_plane_bound (planted and seen
-  // failing).
+  // B; plane_bound asks it only for `open` with the plane's three bits and not all of the other's.
+  // It fails with the pair's extents E replaced by the plane triangle's own e in own_plane_bound
+  // (planted and seen failing).
   GenRng r(99);
   long within = 0, decided = 0;
   for (int n = 0; n < 6000; ++n) {
@@ -191,9 +191,10 @@ TEST(TinyAgainstHuge, APlanesOwnBoundGivesGmpsSign) {
         decided += in;
         ASSERT_EQ(ex::sgn(v), o3_sign_gmp(abc, abc + 3, abc + 6, c + 9 * lane + 3 * k)) << n << " " << lane << k;
       }
-    for (unsigned open = 0; open < 64; ++open) {
-      ASSERT_EQ(d::plane_bound(c + 9, box, bound, open, 007u), open == 007u ? own[0] : bound) << open;
-      ASSERT_EQ(d::plane_bound(c, box, bound, open, 070u), open == 070u ? own[1] : bound) << open;
+    for (unsigned open = 0; open < 64; ++open) {  // the three bits of the plane, not all of the other's
+      const bool pi2 = (open & 7u) == 7u && (open & 070u) != 070u, pi1 = (open & 070u) == 070u && (open & 7u) != 7u;
+      ASSERT_EQ(d::plane_bound(c + 9, box, bound, open, 007u), pi2 ? own[0] : bound) << open;
+      ASSERT_EQ(d::plane_bound(c, box, bound, open, 070u), pi1 ? own[1] : bound) << open;
     }
   }
   EXPECT_GT(within, 15000) << within;
