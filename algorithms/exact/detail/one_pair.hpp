@@ -332,8 +332,9 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
     if ((ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c))
       known[0] = known[1] = known[2] = 0;
     else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
+      // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
       for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
-        known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);  // t: π2's own bound for a small T2 (plane_bound.hpp)
+        known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);
   }
   // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
   // (coplanar.hpp); degenerate input goes on to the classification.
