@@ -26,6 +26,7 @@
 #include "algorithms/exact/detail/coplanar.hpp"
 #include "algorithms/exact/detail/crossing.hpp"
 #include "algorithms/exact/detail/finish_front.hpp"
+#include "algorithms/exact/detail/grid_axes.hpp"
 #include "algorithms/exact/detail/pair_box.hpp"
 #include "algorithms/exact/detail/plane_bound.hpp"
 #include "algorithms/exact/detail/scalar.hpp"
@@ -204,45 +205,20 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   return Relation::unsupported;
 }
 
-// The grid test axis by axis: each axis k its own unit 2^q_k, q_k = e_k - 14 for 2^e_k <= m_k <
-// 2^(e_k+1), m_k = max(the axis' largest |coordinate|, 2^-344) below 2^300, and every coordinate x
-// along k a multiple of 2^q_k: fl(fl(x + C_k) - C_k) = x with C_k = 1.5·2^(q_k+52) built from m_k's
-// exponent bits. Every monomial of a det3 or det2 of the pair's points takes one factor per axis,
-// so all of a value's terms share one unit and every value the filter computed is exact
-// (algorithms/exact/README.md, "The grid case, axis by axis"); a pair on the kernel's grid (one q
-// for all axes) passes it. `mag`: each axis' largest |coordinate| (box_magnitudes, finite input).
-inline bool on_grid(const double* c, const double (&mag)[3]) {
-  const Double2 mxy = {mag[0], mag[1]}, mz = {mag[2], mag[2]}, top = {0x1p300, 0x1p300}, least = {0x1p-344, 0x1p-344};
-  if ((lt2(mxy, top) & lt2(mz, top)) != 3u) return false;  // one branch; false for NaN
-  // C_k from max(m_k, 2^-344)'s exponent bits, x and y in one register: the exponent plus 38, and
-  // the bit below the leading one
-  const Long2 exponent = {0x7ff0000000000000ll, 0x7ff0000000000000ll}, up = {38ll << 52, 38ll << 52},
-              half = {1ll << 51, 1ll << 51};
-  const Double2 cxy = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(max2(mxy, least)) & exponent) + up) | half);
-  const Double2 cz = reinterpret_cast<Double2>(((reinterpret_cast<Long2>(max2(mz, least)) & exponent) + up) | half);
-  // two coordinates at a time, read once: x y | z x | y z, three times over
-  const Double2 big2[3] = {cxy, Double2{cz[0], cxy[0]}, Double2{cxy[1], cz[0]}};
-  Long2 grid = {-1, -1};
-  for (int i = 0; i < 9; ++i) {
-    Double2 v;
-    std::memcpy(&v, c + 2 * i, sizeof v);
-    grid &= (v + big2[i % 3]) - big2[i % 3] == v;
-  }
-  return all2(grid);
-}
-
 // The pair's grid test and its shared integer conversion, each evaluated at most once per pair
 // and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes,
 // 2 yes in 40 bits). The largest |coordinate| per axis comes from the filter's box (finite: exact).
 struct LazyGrid {
-  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid) { box_magnitudes(box, mag); }
+  // `grid` 1: known on the grid; else unknown (so `points` is on_grid's whenever state is 0)
+  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid > 0 ? 1 : -1) { box_magnitudes(box, mag); }
   const double* c;
   int state;
   int ints = -1;
+  unsigned points = 0u;  // off the grid: grid_points' mask from on_grid
   double mag[3];
   intexact::PairInt61 x;
   bool on() {
-    if (state < 0) state = on_grid(c, mag) ? 1 : 0;
+    if (state < 0) state = on_grid(c, mag, points) ? 1 : 0;
     return state != 0;
   }
   bool converted() {  // x unset until needed; 2: every |X| < 2^40 (pair_to_int40), 1: below 2^61
@@ -251,18 +227,27 @@ struct LazyGrid {
   }
 };
 
-// The exact sign of o3(a, b, cc, d) for the pair's points with indices a, b, cc, d (0..5), given
-// a value `v` of it evaluated in det3_eval's shape and the pair's bound, valid for every such
-// value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
-// the grid the value is exact ("The grid case"); else the pair's shared integer conversion when
-// every axis fits, 40 bits in __int128 first ("Zeros off the grid, 40 bits per axis"), else 61
-// ("Zeros off the grid"); else the per-call filters and the integer engine. (The certain case and
-// a grid already known inline, the rest out of line: most calls are one of those.)
-[[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
-  if (g.on()) return sgn(v);  // the first value within the bound tests the grid
+// sign_o3_within's last steps, off the grid: the pair's shared integer conversion when every axis
+// fits, 40 bits in __int128 first (algorithms/exact/README.md, "Zeros off the grid, 40 bits per
+// axis"), else 61 ("Zeros off the grid"); else the per-call filters and the integer engine. Apart
+// so that the steps before keep no registers to save.
+[[gnu::noinline]] inline int sign_o3_converted(LazyGrid& g, int a, int b, int cc, int d) {
   if (const int i[6] = {a, b, a, cc, a, d}; g.converted())
     return g.ints == 2 ? intexact::det3_pair40_sign(g.x, i) : intexact::det3_pair_sign(g.x, i);
   return Filtered::o3(g.c + 3 * a, g.c + 3 * b, g.c + 3 * cc, g.c + 3 * d);
+}
+
+// The exact sign of o3(a, b, cc, d) for the pair's points with indices a, b, cc, d (0..5), given
+// a value `v` of it evaluated in det3_eval's shape and the pair's bound, valid for every such
+// value (algorithms/exact/README.md, "Shared bounds"): certain beyond the bound; within it, on
+// the grid the value is exact ("The grid case"), and off it when its own four points are on it ("A
+// value's own points on the grid"); else sign_o3_converted. (The certain case and a grid already
+// known inline, the rest out of line: most calls are one of those.)
+[[gnu::noinline]] inline int sign_o3_within(double v, LazyGrid& g, int a, int b, int cc, int d) {
+  if (g.on()) return sgn(v);  // the first value within the bound tests the grid
+  // off it, the value's own four points on it: exact ("A value's own points on the grid")
+  if (const unsigned own = point_bits(a, b, cc, d); g.points != 0u && (g.points & own) == own) return sgn(v);
+  return sign_o3_converted(g, a, b, cc, d);
 }
 [[gnu::always_inline]] inline int sign_o3(double v, double bound, LazyGrid& g, int a, int b, int cc, int d) {
   if (v > bound) return 1;

@@ -1729,7 +1729,8 @@ TrianglePair grid_per_axis(GenRng& r, const int (&q)[3], const int (&top)[3]) {
 bool pair_on_grid(const double* c) {
   double mag[3];
   ex::detail::box_magnitudes(ex::detail::union_of(ex::detail::box_of(c), ex::detail::box_of(c + 9)), mag);
-  return ex::detail::on_grid(c, mag);
+  unsigned points;
+  return ex::detail::on_grid(c, mag, points);
 }
 }  // namespace
 
@@ -1799,6 +1800,116 @@ TEST(GridAxisByAxis, TouchingPairsScaledPerAxisAreDecidedOnIt) {
   EXPECT_GT(off, static_cast<int>(pairs.size() / 2));
   EXPECT_GT(grid, off / 4);
   expect_all_paths_agree(pairs, "scaled per axis");
+}
+
+// ---------------------------------------------------------------- a value's own points on the grid
+
+namespace {
+// On the grid axis by axis with axis k at 2^s[k] (s from -400 to 290: some pairs below 2^-344's
+// clamp, some beyond 2^300): the six points in one plane through integer points (every det3 of
+// four is zero) or, every other pair, T2 at integer points anywhere; then one or two points moved
+// along one or every axis by ±2^(s[k] - t), t from 1 to 45 (small t may stay on the grid, large t
+// may round away).
+TrianglePair moved_off_grid(GenRng& r, int n) {
+  const auto iv = [&r](int lo, int hi) { return static_cast<int>(r.integer(lo, hi)); };
+  int s[3];
+  for (int& e : s) e = n % 4 == 0 ? iv(-400, 290) : iv(-330, 270);
+  const V base = int_vec(r, 200), u = int_vec(r, 20), w = int_vec(r, 20);
+  TrianglePair p;
+  for (int v = 0; v < 6; ++v) {
+    V x = base + static_cast<double>(iv(-30, 30)) * u + static_cast<double>(iv(-30, 30)) * w;
+    if (n % 2 == 1 && v >= 3) x = int_vec(r, 1400);
+    (v < 3 ? p.t1 : p.t2)[v % 3] = x;
+  }
+  double* c = reinterpret_cast<double*>(&p);
+  for (int j = 0; j < 18; ++j) c[j] = std::ldexp(c[j], s[j % 3]);
+  const int first = iv(0, 5), second = iv(0, 5), moves = iv(1, 2);
+  for (int m = 0; m < moves; ++m) {
+    const int pt = m == 0 ? first : second, axis = iv(0, 3);  // 3: every axis
+    for (int k = 0; k < 3; ++k)
+      if (axis == 3 || axis == k) c[3 * pt + k] += std::ldexp(r.coin() ? 1.0 : -1.0, s[k] - iv(1, 45));
+  }
+  return p;
+}
+
+// grid_points' mask (before kFourOrMore) written again from the definition ("The grid case, axis
+// by axis"): the unit 2^q_k from the axis' largest |coordinate| (at least 2^-344), q_k = ilogb -
+// 14, every axis below 2^300; bit p where point p's three coordinates are multiples of their
+// axis' unit.
+unsigned points_reference(const double* c) {
+  double m[3] = {0x1p-344, 0x1p-344, 0x1p-344};
+  for (int j = 0; j < 18; ++j) m[j % 3] = std::max(m[j % 3], std::fabs(c[j]));
+  if (std::max({m[0], m[1], m[2]}) >= 0x1p300) return 0u;
+  unsigned out = 0u;
+  for (int p = 0; p < 6; ++p) {
+    bool on = true;
+    for (int k = 0; k < 3; ++k) {
+      const int q = std::ilogb(m[k]) - 14;
+      on = on && std::ldexp(std::nearbyint(std::ldexp(c[3 * p + k], -q)), q) == c[3 * p + k];
+    }
+    out |= static_cast<unsigned>(on) << p;
+  }
+  return out;
+}
+}  // namespace
+
+TEST(GridPoints, OwnPointsOnTheGridMakeTheValueExact) {
+  // grid_points against the definition; every o3 of four of the six points in det3_eval's
+  // shape, the filter's plane values (plane_values) and G1, G2 (gd_lanes on every kPick row of a
+  // crossing pattern): exact in double when its four points are on the grid, and
+  // sign_o3_within's sign GMP's. Planted and seen failing: a point's bit taken from the wrong
+  // point in point_bits (d's from a), and a point's z left out of grid_points.
+  namespace d = ex::detail;
+  GenRng r(1515);
+  long own = 0, shortcut = 0, wrong_if_taken = 0;
+  std::vector<TrianglePair> pairs;
+  for (int n = 0; n < 1200; ++n) {
+    const TrianglePair p = moved_off_grid(r, n);
+    pairs.push_back(p);
+    const double* c = p.t1[0].data();
+    const d::Box box = d::union_of(d::box_of(c), d::box_of(c + 9));
+    double mag[3];
+    d::box_magnitudes(box, mag);
+    unsigned points;
+    const bool grid = d::on_grid(c, mag, points);
+    const unsigned ref = points_reference(c);
+    ASSERT_EQ(grid, ref == 63u) << n;
+    if (!grid) ASSERT_EQ(points, __builtin_popcount(ref) >= 4 ? ref : 0u) << n;
+    const auto check = [&](double v, int a, int b, int cc, int x) {
+      const Q exact = det3_exact(c + 3 * a, c + 3 * b, c + 3 * a, c + 3 * cc, c + 3 * a, c + 3 * x);
+      const unsigned bits = 1u << a | 1u << b | 1u << cc | 1u << x;
+      if ((ref & bits) == bits) {
+        ++own, shortcut += !grid;
+        ASSERT_EQ(cmp(Q(v), exact), 0) << n << " " << a << b << cc << x;
+      } else {
+        wrong_if_taken += (v > 0) - (v < 0) != sign(exact);
+      }
+      d::LazyGrid g{c, box, -1};
+      ASSERT_EQ(d::sign_o3_within(v, g, a, b, cc, x), sign(exact)) << n << " " << a << b << cc << x;
+    };
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        for (int cc = 0; cc < 6; ++cc)
+          for (int x = 0; x < 6; ++x)
+            if (a != b && a != cc && a != x && b != cc && b != x && cc != x)
+              check(ex::det3_eval(c + 3 * a, c + 3 * x, c + 3 * a, c + 3 * b, c + 3 * a, c + 3 * cc).value, a, b, cc, x);
+    d::Double2 s[3];
+    d::plane_values(c, s);
+    for (int k = 0; k < 3; ++k) check(s[k][0], 3, 4, 5, k), check(s[k][1], 0, 1, 2, 3 + k);
+    for (unsigned sp = 0; sp < 64; ++sp) {
+      if ((sp & 7u) == 0u || (sp & 7u) == 7u || (sp >> 3) == 0u || (sp >> 3) == 7u) continue;
+      const unsigned char* o = d::kPick[sp].data();
+      const d::Double2 gg = d::gd_lanes(c, o);
+      check(gg[0], o[0] / 3, o[1] / 3, o[3] / 3, o[4] / 3);
+      check(gg[1], o[0] / 3, o[2] / 3, o[5] / 3, o[3] / 3);
+    }
+  }
+  std::printf("own points on the grid %ld (pair off it %ld), sign of the value wrong otherwise %ld\n", own, shortcut,
+              wrong_if_taken);
+  EXPECT_GT(shortcut, 20000);
+  EXPECT_GT(wrong_if_taken, 1000);
+  pairs.resize(400);
+  expect_all_paths_agree(pairs, "points moved off the grid");
 }
 
 // ---------------------------------------------------------------- a triangle in an axis-parallel plane
