@@ -90,9 +90,9 @@ inline void edge_maxima(const Double2 (&n)[3][3], Double2 (&m)[3]) {
 // relation level) answers a meet with three values of the 18 (algorithms/exact/README.md, "A
 // vertex inside the other triangle, on exact values").
 template <bool kRelation>
-bool coplanar_exact(const double* c, const Projected& p, Relation& out) {
+[[gnu::always_inline]] inline bool coplanar_exact(const double* c, const Projected& p, Relation& out) {
   const Double2 orient = coplanar_orient(p);
-  if ((orient[0] == 0.0) | (orient[1] == 0.0)) return false;
+  if (any2(orient == 0.0)) return false;
   CoplanarValues cv;
   cv.orient = orient;
   Double2 col[3], first[3];
@@ -100,9 +100,12 @@ bool coplanar_exact(const double* c, const Projected& p, Relation& out) {
   const Long2 sign = reinterpret_cast<Long2>(orient) & Long2{INT64_MIN, INT64_MIN};
   for (int e = 0; e < 3; ++e)  // inside positive
     cv.edge[e][0] = col[e], first[e] = reinterpret_cast<Double2>(reinterpret_cast<Long2>(col[e]) ^ sign);
-  const Long2 in = kRelation ? (first[0] > 0.0) & (first[1] > 0.0) & (first[2] > 0.0)
-                             : (first[0] >= 0.0) & (first[1] >= 0.0) & (first[2] >= 0.0);
-  if ((in[0] | in[1]) != 0) {
+  // the lane tests by lt2 / le2 (a comparison and a movmskpd each: the vector extension's masks
+  // had been read out of the register lane by lane before their movmskpd)
+  const Double2 zero = {0.0, 0.0};
+  const unsigned in = kRelation ? lt2(zero, first[0]) & lt2(zero, first[1]) & lt2(zero, first[2])
+                                : le2(zero, first[0]) & le2(zero, first[1]) & le2(zero, first[2]);
+  if (in != 0u) {
     out = Relation::coplanar_overlap;
     return true;
   }
@@ -113,13 +116,11 @@ bool coplanar_exact(const double* c, const Projected& p, Relation& out) {
   Double2 n[3][3], m[3];
   inside_positive(cv, n);
   edge_maxima(n, m);
-  const Long2 strict = (m[0] < 0.0) | (m[1] < 0.0) | (m[2] < 0.0);
-  if ((strict[0] | strict[1]) != 0) {
+  if ((lt2(m[0], zero) | lt2(m[1], zero) | lt2(m[2], zero)) != 0u) {
     out = Relation::coplanar_disjoint;
     return true;
   }
-  const Long2 inside = (m[0] > 0.0) & (m[1] > 0.0) & (m[2] > 0.0);
-  if (!kRelation || (inside[0] & inside[1]) != 0) {  // no edge line separates, not even weakly
+  if (!kRelation || (lt2(zero, m[0]) & lt2(zero, m[1]) & lt2(zero, m[2])) == 3u) {  // no edge line separates, not even weakly
     out = Relation::coplanar_overlap;
     return true;
   }
@@ -135,15 +136,13 @@ bool coplanar_exact(const double* c, const Projected& p, Relation& out) {
 // edge line has a value certainly inside (the interiors meet), -1 undecided (an orientation or a
 // deciding value within t).
 inline int coplanar_certain(const CoplanarValues& cv, double t) {
-  const Long2 proper = (cv.orient > t) | (cv.orient < -t);
-  if ((proper[0] & proper[1]) == 0) return -1;
+  const Double2 hi = {t, t}, lo = -hi;
+  if ((lt2(hi, cv.orient) | lt2(cv.orient, lo)) != 3u) return -1;
   Double2 n[3][3], m[3];
   inside_positive(cv, n);
   edge_maxima(n, m);
-  const Long2 strict = (m[0] < -t) | (m[1] < -t) | (m[2] < -t);
-  if ((strict[0] | strict[1]) != 0) return 0;
-  const Long2 inside = (m[0] > t) & (m[1] > t) & (m[2] > t);
-  return (inside[0] & inside[1]) != 0 ? 1 : -1;
+  if ((lt2(m[0], lo) | lt2(m[1], lo) | lt2(m[2], lo)) != 0u) return 0;
+  return (lt2(hi, m[0]) & lt2(hi, m[1]) & lt2(hi, m[2])) == 3u ? 1 : -1;
 }
 
 // Each value's exact sign (beyond t its own; within it the pair's shared conversion, else the
@@ -173,6 +172,25 @@ bool coplanar_by_signs(const double* c, Grid& g, const CoplanarValues& cv, doubl
   return true;
 }
 
+// The axis of T1's largest computed normal component (the cross product of T1's two edges from a1,
+// as normal_signs evaluates it); ties to the lower axis.
+inline int largest_normal_axis(const double* c) {
+  const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
+  const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
+  const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
+  return ((ax >= ay) & (ax >= az)) ? 0 : (ay >= az ? 1 : 2);
+}
+
+// On the 3-D grid every o2 of the pair's points is exact in every projection, and any projection
+// with both orientations non-zero decides: (x, y) first, T1's normal only when that fails
+// (algorithms/exact/README.md, "Coplanar pairs on the grid: (x, y) first"). False: an orientation
+// is zero in the projection of T1's largest normal component too (a degenerate triangle).
+template <bool kRelation>
+bool coplanar_grid(const double* c, Relation& out) {
+  if (coplanar_exact<kRelation>(c, project_of(c, 2), out)) return true;
+  return coplanar_exact<kRelation>(c, project_of(c, largest_normal_axis(c)), out);
+}
+
 // The pair (18 coordinates at c, finite) when T1's exact signs against π2 are all zero: true and
 // `out` set when both triangles are proper (then they are coplanar), false when a triangle's
 // orientation in the chosen projection is zero (a degenerate triangle, or a normal whose largest
@@ -181,24 +199,19 @@ bool coplanar_by_signs(const double* c, Grid& g, const CoplanarValues& cv, doubl
 // converted() and x, the pair's shared integer conversion.
 template <bool kRelation, class Grid>
 bool coplanar_known(const double* c, Grid& g, Relation& out) {
-  const P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
-  // on the 3-D grid, or with (x, y) on the 2-D grid, every o2 there is exact and any projection
-  // with both orientations non-zero decides: T1's normal only when that fails; off the 3-D grid
-  // (x, y) is tried first only for six points in one plane z = h, whose largest normal component
-  // is z (algorithms/exact/README.md, "Coplanar pairs off the 3-D grid: (x, y) first")
+  if (g.state == 1) return coplanar_grid<kRelation>(c, out);
+  // off the 3-D grid (x, y) is tried first only for six points in one plane z = h, whose largest
+  // normal component is z, and only on the 2-D grid (algorithms/exact/README.md, "Coplanar pairs
+  // off the 3-D grid: (x, y) first")
   const auto flat_z = [c] { return (c[2] == c[5]) & (c[2] == c[8]) & (c[2] == c[11]) & (c[2] == c[14]) & (c[2] == c[17]); };
-  if (g.state == 1 || flat_z())
-    if (const Projected xy = project_xy(c);
-        (g.state == 1 || on_grid2(xy, g.mag, 0, 1)) && coplanar_exact<kRelation>(c, xy, out))
+  if (flat_z())
+    if (const Projected xy = project_of(c, 2); on_grid2(xy, g.mag, 0, 1) && coplanar_exact<kRelation>(c, xy, out))
       return true;
-  const double ux = c[3] - c[0], uy = c[4] - c[1], uz = c[5] - c[2];
-  const double vx = c[6] - c[0], vy = c[7] - c[1], vz = c[8] - c[2];
-  const double ax = std::fabs(uy * vz - uz * vy), ay = std::fabs(uz * vx - ux * vz), az = std::fabs(ux * vy - uy * vx);
-  const int k = ((ax >= ay) & (ax >= az)) ? 0 : (ay >= az ? 1 : 2);
+  const int k = largest_normal_axis(c);
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
-  const Projected p = project(t1, t2, i, j);
-  // every o2 exact on the 3-D grid (known when the plane signs needed it) or the 2-D grid
-  if (g.state == 1 || on_grid2(p, g.mag, i, j)) return coplanar_exact<kRelation>(c, p, out);
+  const Projected p = project_of(c, k);
+  // every o2 exact on the 2-D grid
+  if (on_grid2(p, g.mag, i, j)) return coplanar_exact<kRelation>(c, p, out);
   const CoplanarValues cv = coplanar_values(p);
   const double t = projected_bound(p);
   if (const int d = coplanar_certain(cv, t); d >= 0) {

@@ -6,6 +6,9 @@
 
 #include "algorithms/exact/detail/pair_box.hpp"
 
+#include <cstdint>
+#include <cstring>
+
 namespace tritri::exact::detail {
 
 // The signs of the filter's six values (T1's against π2, then T2's against π1), each certain or
@@ -18,6 +21,16 @@ inline void value_signs(const double s1[3], const double s2[3], int known[6]) {
     const Long2 s = (v[k] < 0.0) - (v[k] > 0.0);
     known[2 * k] = static_cast<int>(s[0]), known[2 * k + 1] = static_cast<int>(s[1]);
   }
+}
+
+// The three values are zeros (of either sign): x == 0.0 exactly when its bits without the sign
+// bit are zero, so the or of the three, shifted past the sign bit, is zero exactly when all three
+// compare equal to 0.0 (a NaN has exponent bits set). One branch, where three comparisons with
+// zero had cost a parity test each.
+inline bool all_zero3(const double s[3]) {
+  std::uint64_t b[3];
+  std::memcpy(b, s, sizeof b);
+  return ((b[0] | b[1] | b[2]) << 1) == 0u;
 }
 
 // shared_vertices (one_pair.hpp) when all nine pairs (i, j) are candidates (coplanar and nearly

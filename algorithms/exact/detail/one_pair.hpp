@@ -282,12 +282,11 @@ template <bool kRelation>
 }
 
 // After an undecided filter (`grid`: the pair is known to pass the grid test, so plain double is
-// exact for it): non-finite input is declined; then the shared-vertex shortcuts; then the six
-// plane signs made exact (the filter's certain ones kept, the others resolved one by one) and,
-// when both triangles have a non-zero sign against the other's plane, one-sided or crossing
-// decided here; the rest (coplanar, degenerate, parallel candidates) by the classification with
-// those signs. Each step is proved in algorithms/exact/README.md, "Exact signs after the filter".
-// At the overlap level only the emptiness of the answer counts (classify.hpp).
+// exact for it): non-finite input declined; the shared-vertex shortcuts; the six plane signs made
+// exact (certain ones kept, the others resolved one by one); one-sided, crossing and coplanar pairs
+// decided from them; the rest (degenerate, parallel candidates) by the classification. Proved in
+// algorithms/exact/README.md, "Exact signs after the filter"; at the overlap level only the
+// emptiness of the answer counts (classify.hpp).
 template <bool kRelation>
 RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
@@ -304,6 +303,14 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   LazyGrid g{c, ps.box, grid ? 1 : -1};
   // a value within the bound needs the grid test: made here, a pass proves the coordinates finite
   if (!(!grid && ps.open != 0u && g.on()) && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
+  // T1's three values computed as zeros on the grid: its exact signs, and the coplanar step decides
+  // (algorithms/exact/README.md, "Coplanar pairs on the grid straight from the filter's zeros")
+  const bool zero1 = all_zero3(ps.s1);
+  if (zero1 && g.state == 1) {
+    if (route) *route = Route::grid;
+    if (Relation rel; coplanar_grid<kRelation>(c, rel)) return answer_with(rel);
+    return solve<kRelation>(pair, route);  // a degenerate triangle
+  }
   const double b = ps.bound;
   // every value certain or exact (on the grid): the six signs are the values' own
   const bool exact = (ps.open == 0u) | (g.state == 1);
@@ -314,7 +321,7 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
     // off the grid: six points on one axis-parallel plane prove T1's zeros without arithmetic
     // (their values are computed zeros); a value within the bound against a triangle in an
     // axis-parallel plane by comparisons and one o2; else its exact sign one by one
-    if ((ps.s1[0] == 0.0) & (ps.s1[1] == 0.0) & (ps.s1[2] == 0.0) && flat_pair(c))
+    if (zero1 && flat_pair(c))
       known[0] = known[1] = known[2] = 0;
     else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
       // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
@@ -322,8 +329,8 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
         known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);
   }
   // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
-  // (coplanar.hpp); degenerate input goes on to the classification.
-  const bool any1 = (known[0] | known[1] | known[2]) != 0;
+  // (coplanar.hpp); degenerate input goes on to the classification (exact: zero1 failed, a sign not)
+  const bool any1 = exact || (known[0] | known[1] | known[2]) != 0;
   if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
     if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
     return answer_with(rel);

@@ -57,6 +57,17 @@ inline bool all2(Long2 m) {
 #endif
 }
 
+// Either lane of an equality mask true: one cmpeqpd and one movmskpd on SSE2, where two scalar
+// comparisons with zero cost a parity test each. (GCC 12 reads a `<` or `<=` mask of the vector
+// extension out lane by lane before a movmskpd: lt2 / le2 take those.)
+inline bool any2(Long2 m) {
+#if defined(__SSE2__)
+  return _mm_movemask_pd(reinterpret_cast<__m128d>(m)) != 0;
+#else
+  return (m[0] | m[1]) != 0;
+#endif
+}
+
 // The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
 // and maxima by `<` / `>`: an unordered comparison keeps the running value).
 struct Box {

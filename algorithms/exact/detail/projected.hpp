@@ -24,16 +24,25 @@ inline Projected project(const P (&a)[3], const P (&b)[3], int i, int j) {
   return p;
 }
 
-// The projection (x, y) from the pair's 18 coordinates (T1's three points, then T2's): each
-// point's x and y in one load, then lane 0 T1's and lane 1 T2's by two unpacks; the values of
-// project(T1, T2, 0, 1), where GCC had built each register from two scalar loads.
-inline Projected project_xy(const double* c) {
+// The projection dropping axis k, (i, j) = (k + 1, k + 2) mod 3, from the pair's 18 coordinates
+// (T1's three points, then T2's): two neighbouring coordinates of a point in one load, then lane 0
+// T1's and lane 1 T2's by unpacks; the values of project(T1, T2, i, j), where GCC had built each
+// register from two scalar loads. k = 1 takes z and x from two loads (z is not next to x).
+inline Projected project_of(const double* c, int k) {
   Projected p;
+  const int off = k == 0 ? 1 : 0;  // (y, z) from y on, (x, y) from x on
   for (int v = 0; v < 3; ++v) {
     Double2 a, b;
-    std::memcpy(&a, c + 3 * v, sizeof a);
-    std::memcpy(&b, c + 9 + 3 * v, sizeof b);
-    p.i[v] = __builtin_shufflevector(a, b, 0, 2), p.j[v] = __builtin_shufflevector(a, b, 1, 3);
+    std::memcpy(&a, c + 3 * v + off, sizeof a);
+    std::memcpy(&b, c + 9 + 3 * v + off, sizeof b);
+    if (k == 1) {  // (z, x): x from the load at x, z from the load at y (c + 16 is the last read)
+      Double2 ay, by;
+      std::memcpy(&ay, c + 3 * v + 1, sizeof ay);
+      std::memcpy(&by, c + 9 + 3 * v + 1, sizeof by);
+      p.i[v] = __builtin_shufflevector(ay, by, 1, 3), p.j[v] = __builtin_shufflevector(a, b, 0, 2);
+    } else {
+      p.i[v] = __builtin_shufflevector(a, b, 0, 2), p.j[v] = __builtin_shufflevector(a, b, 1, 3);
+    }
   }
   return p;
 }

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 using namespace tritri;
@@ -113,7 +114,7 @@ TEST(CoplanarXy, TheTwoDimensionalGridFromThePairsBoxIsTheDirectTest) {
     double mag[3];
     const double* c = p.t1[0].data();
     d::box_magnitudes(d::union_of(d::box_of(c), d::box_of(c + 9)), mag);
-    const bool got = d::on_grid2(d::project_xy(c), mag, 0, 1), want = grid2_reference(p);
+    const bool got = d::on_grid2(d::project_of(c, 2), mag, 0, 1), want = grid2_reference(p);
     ASSERT_EQ(got, want) << n;
     (want ? on : off) += 1;
   }
@@ -144,4 +145,90 @@ TEST(CoplanarXy, PairsOffTheThreeDGridAgreeWithTheOracle) {
     for (const auto& v : every_order(t)) edge.push_back(v);
   }
   expect_oracle(edge, "one unit outside at 26 bits");
+}
+
+// The projection by loads (projected.hpp's project_of) holds, for every axis k dropped, the same
+// doubles in the same lanes as project(T1, T2, k + 1, k + 2), bit for bit: random coordinates with
+// signed zeros, infinities and NaN. It fails with k = 1's x taken from the load at y.
+TEST(CoplanarGrid, TheProjectionByLoadsIsTheProjection) {
+  GenRng r(71);
+  const double special[] = {0.0, -0.0, __builtin_inf(), -__builtin_inf(), __builtin_nan(""), 0x1p-1074, -1.5};
+  for (int n = 0; n < 20000; ++n) {
+    double c[18];
+    for (double& x : c) x = r.integer(0, 5) == 0 ? special[r.integer(0, 6)] : std::ldexp(r.uniform(-1.0, 1.0), r.integer(-30, 30));
+    const ex::P t1[3] = {c, c + 3, c + 6}, t2[3] = {c + 9, c + 12, c + 15};
+    for (int k = 0; k < 3; ++k) {
+      const d::Projected got = d::project_of(c, k), want = d::project(t1, t2, (k + 1) % 3, (k + 2) % 3);
+      ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << n << " k " << k;
+    }
+  }
+}
+
+// all_zero3 (finish_front.hpp) is the three comparisons with 0.0: signed zeros, subnormals,
+// infinities, NaN of both signs in every place. It fails without the shift past the sign bit.
+TEST(CoplanarGrid, ThreeZerosByTheirBitsAreThreeComparisons) {
+  const double v[] = {0.0, -0.0, 0x1p-1074, -0x1p-1074, 1.0, -2.0, __builtin_inf(), -__builtin_inf(),
+                      __builtin_nan(""), -__builtin_nan(""), 0x1p-1022, 0x1.fffffffffffffp1023};
+  for (double a : v)
+    for (double b : v)
+      for (double e : v) {
+        const double s[3] = {a, b, e};
+        ASSERT_EQ(d::all_zero3(s), a == 0.0 && b == 0.0 && e == 0.0) << a << " " << b << " " << e;
+      }
+}
+
+namespace {
+
+// Small-integer points a + s·u + t·v of one plane (on the 3-D grid): a general plane, z = c, x = c
+// or y = c (T1's n_z zero: the normal's projection after (x, y)).
+struct Frame {
+  V a, u, v;
+  V at(int s, int t) const { return a + u * static_cast<double>(s) + v * static_cast<double>(t); }
+};
+Frame plane_frame(GenRng& r, int kind) {
+  Frame f{V(r.integer(-4, 4), r.integer(-4, 4), r.integer(-4, 4)), V(r.integer(-2, 2), r.integer(-2, 2), r.integer(-2, 2)),
+          V(r.integer(-2, 2), r.integer(-2, 2), r.integer(-2, 2))};
+  if (kind == 1) f.u[2] = 0, f.v[2] = 0;
+  if (kind == 2) f.u = V(0, 1, r.integer(-2, 2)), f.v = V(0, r.integer(-2, 2), 1 + r.integer(0, 1));
+  if (kind == 3) f.u = V(1, 0, r.integer(-2, 2)), f.v = V(r.integer(-2, 2), 0, 1 + r.integer(0, 1));
+  return f;
+}
+
+}  // namespace
+
+// Pairs on the 3-D grid whose T1 has its three plane values zero (finish's branch straight to the
+// coplanar step, README "Coplanar pairs on the grid straight from the filter's zeros") and pairs
+// beside them that must not take it: coplanar pairs sharing a vertex, touching along an edge or
+// overlapping; T1 or T2 degenerate in the plane (the classification after the step); T1 with two
+// vertices in T2's plane and the third lifted off it (two zeros: its projection may meet T2 where
+// the triangles do not). Every order, one pair per call and in batches, against the oracle. It
+// fails with all_zero3 reading two of the three values.
+TEST(CoplanarGrid, ZerosOnTheGridAgreeWithTheOracle) {
+  GenRng r(72);
+  std::vector<TrianglePair> pairs;
+  for (int n = 0; n < 160; ++n) {
+    Frame f = plane_frame(r, n % 4);
+    const auto pt = [&] { return f.at(r.integer(-2, 4), r.integer(-2, 4)); };
+    TrianglePair p{Triangle{{f.at(0, 0), f.at(4, 0), f.at(0, 4)}}, Triangle{{pt(), pt(), pt()}}};
+    switch (n % 5) {
+      case 1: p.t2[0] = p.t1[1]; break;                           // a common vertex
+      case 2: p.t2[0] = f.at(2, 0), p.t2[1] = f.at(2, 2); break;  // along T1's edges
+      case 3: p.t1[2] = p.t1[0] + (p.t1[1] - p.t1[0]) * 2.0; break;  // T1 a segment in the plane
+      case 4: {  // T1's third vertex off the plane by the plane's normal
+        const V w = f.u.cross(f.v);
+        p.t1[2] = pt() + w * static_cast<double>(r.integer(0, 1) ? 1 : -1);
+        p.t1[0] = pt(), p.t1[1] = pt();
+        break;
+      }
+      default: break;
+    }
+    pairs.push_back(p);
+  }
+  std::vector<TrianglePair> all;
+  for (const TrianglePair& p : pairs)
+    for (const auto& v : every_order(p)) all.push_back(v);
+  expect_oracle(all, "zeros on the grid");
+  std::vector<Overlap> ov(all.size());
+  ex::overlap_batch_with(ex::Isa::scalar, all.data(), all.size(), ov.data());
+  for (std::size_t n = 0; n < all.size(); ++n) ASSERT_EQ(ov[n] == Overlap::yes, oracle_label(all[n]).overlap) << "scalar #" << n;
 }
