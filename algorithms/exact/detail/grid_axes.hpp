@@ -76,14 +76,14 @@ inline unsigned grid_points(const Long2 (&on)[9]) {
 // the kernel's grid (one q for all axes) passes it. `mag`: box_magnitudes (finite input). When it
 // fails, `points` is grid_points' mask (0 when an axis is out of range), made from the comparisons
 // still in registers.
-inline bool on_grid(const double* c, const double (&mag)[3], unsigned& points) {
+inline bool on_grid(const double* c, const double (&mag)[3], unsigned& points, bool want_points = true) {
   points = 0u;
   Long2 on[9];
   if (!grid_comparisons(c, mag, on)) return false;
   Long2 grid = on[0];
   for (int i = 1; i < 9; ++i) grid &= on[i];
   if (all2(grid)) return true;
-  points = grid_points(on);
+  if (want_points) points = grid_points(on);
   return false;
 }
 

@@ -214,11 +214,12 @@ struct LazyGrid {
   const double* c;
   int state;
   int ints = -1;
-  unsigned points = 0u;  // off the grid: grid_points' mask from on_grid
+  unsigned points = 0u;  // off the grid: grid_points' mask from on_grid, when `want_points`
+  bool want_points = true;
   double mag[3];
   intexact::PairInt61 x;
   bool on() {
-    if (state < 0) state = on_grid(c, mag, points) ? 1 : 0;
+    if (state < 0) state = on_grid(c, mag, points, want_points) ? 1 : 0;
     return state != 0;
   }
   bool converted() {  // x unset until needed; 2: every |X| < 2^40 (pair_to_int40), 1: below 2^61
@@ -301,11 +302,14 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
     }
   }
   LazyGrid g{c, ps.box, grid ? 1 : -1};
+  // T1's three values computed as zeros: off the grid the flat and coplanar steps decide most such
+  // pairs, not sign_o3_within, so the own-points mask is not made for them (0: no shortcut)
+  const bool zero1 = all_zero3(ps.s1);
+  g.want_points = !zero1;
   // a value within the bound needs the grid test: made here, a pass proves the coordinates finite
   if (!(!grid && ps.open != 0u && g.on()) && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
   // T1's three values computed as zeros on the grid: its exact signs, and the coplanar step decides
   // (algorithms/exact/README.md, "Coplanar pairs on the grid straight from the filter's zeros")
-  const bool zero1 = all_zero3(ps.s1);
   if (zero1 && g.state == 1) {
     if (route) *route = Route::grid;
     if (Relation rel; coplanar_grid<kRelation>(c, rel)) return answer_with(rel);

@@ -37,7 +37,7 @@ inline double own_plane_bound(const double* t, const Box& pair) {
 [[gnu::always_inline]] inline double plane_bound(const double* t, const Box& pair, double b, unsigned open,
                                                  unsigned three) {
   const unsigned certain = ~open & 077u;  // some, and none of `three`
-  return (certain != 0u) & ((certain & three) == 0u) ? own_plane_bound(t, pair) : b;
+  return ((certain != 0u) & ((certain & three) == 0u)) ? own_plane_bound(t, pair) : b;
 }
 
 }  // namespace tritri::exact::detail
