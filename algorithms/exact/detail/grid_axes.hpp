@@ -10,15 +10,6 @@
 
 namespace tritri::exact::detail {
 
-// The two lanes of a comparison mask as two bits: one movmskpd on SSE2.
-inline unsigned mask_bits2(Long2 m) {
-#if defined(__SSE2__)
-  return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
-#else
-  return static_cast<unsigned>(m[0] & 1) | static_cast<unsigned>(m[1] & 1) << 1;
-#endif
-}
-
 // The grid test's nine comparisons: on[i] for coordinates 2i and 2i + 1, each fl(fl(x + C_k) - C_k)
 // = x with C_k = 1.5·2^(q_k+52) built from m_k's exponent bits; false (on[] unset) when an axis is
 // out of range (m_k at least 2^300, or NaN). `mag`: each axis' largest |coordinate|.

@@ -48,25 +48,22 @@ inline Double2 max2(Double2 a, Double2 b) {
 #endif
 }
 
-// Both lanes of a comparison mask true: one movmskpd on SSE2.
-inline bool all2(Long2 m) {
+// The two lanes of a comparison mask (all ones or zero per lane) as two bits: one movmskpd on SSE2.
+inline unsigned mask_bits2(Long2 m) {
 #if defined(__SSE2__)
-  return _mm_movemask_pd(reinterpret_cast<__m128d>(m)) == 3;
+  return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
 #else
-  return (m[0] & m[1]) != 0;
+  return static_cast<unsigned>(m[0] & 1) | static_cast<unsigned>(m[1] & 1) << 1;
 #endif
 }
+
+// Both lanes of a comparison mask true.
+inline bool all2(Long2 m) { return mask_bits2(m) == 3u; }
 
 // Either lane of an equality mask true: one cmpeqpd and one movmskpd on SSE2, where two scalar
 // comparisons with zero cost a parity test each. (GCC 12 reads a `<` or `<=` mask of the vector
 // extension out lane by lane before a movmskpd: lt2 / le2 take those.)
-inline bool any2(Long2 m) {
-#if defined(__SSE2__)
-  return _mm_movemask_pd(reinterpret_cast<__m128d>(m)) != 0;
-#else
-  return (m[0] | m[1]) != 0;
-#endif
-}
+inline bool any2(Long2 m) { return mask_bits2(m) != 0u; }
 
 // The axis-aligned box of one triangle's three vertices: x and y in one Double2, z apart (minima
 // and maxima by `<` / `>`: an unordered comparison keeps the running value).
