@@ -16,6 +16,7 @@
 #include "cases/generator/corpus.hpp"
 #include "cases/label.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -91,6 +92,34 @@ std::vector<TrianglePair> make(std::size_t n, GenRng& r, const std::function<Tri
   return out;
 }
 
+constexpr const char* kUsage =
+    "usage: exact_diff [--random=N] [--scale=F] [--full-corpus]\n"
+    "Compares exact's answers (every batch ISA this machine runs, the scalar batch, the one-pair\n"
+    "API; overlap and relation) with the exact oracle's on generated pair sets; exits 1 on any\n"
+    "disagreement, 2 on a bad argument.\n"
+    "  --random=N     random pairs of mixed sizes (default 1000000)\n"
+    "  --scale=F      the other sets' sizes times F (default 1; ctest runs 0.05)\n"
+    "  --full-corpus  the whole generated corpus rather than the quick one (minutes)\n";
+
+// The value after `prefix` in `arg`, parsed whole; false when it is not a count (or a positive
+// number): the caller names the argument.
+bool parse_count(const std::string& arg, std::size_t prefix, std::size_t& out) {
+  const char* s = arg.c_str() + prefix;
+  char* end = nullptr;
+  const unsigned long long v = std::strtoull(s, &end, 10);
+  if (*s < '0' || *s > '9' || *end != '\0') return false;
+  out = static_cast<std::size_t>(v);
+  return true;
+}
+bool parse_scale(const std::string& arg, std::size_t prefix, double& out) {
+  const char* s = arg.c_str() + prefix;
+  char* end = nullptr;
+  const double v = std::strtod(s, &end);
+  if (end == s || *end != '\0' || !(v > 0.0) || !std::isfinite(v)) return false;
+  out = v;
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,9 +128,24 @@ int main(int argc, char** argv) {
   bool full_corpus = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a.rfind("--random=", 0) == 0) n_random = std::strtoul(a.c_str() + 9, nullptr, 10);
-    if (a.rfind("--scale=", 0) == 0) scale = std::atof(a.c_str() + 8);
-    if (a == "--full-corpus") full_corpus = true;
+    bool ok = true;
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (a.rfind("--random=", 0) == 0) {
+      ok = parse_count(a, 9, n_random);
+    } else if (a.rfind("--scale=", 0) == 0) {
+      ok = parse_scale(a, 8, scale);
+    } else if (a == "--full-corpus") {
+      full_corpus = true;
+    } else {
+      std::fprintf(stderr, "exact_diff: unknown argument '%s'\n%s", a.c_str(), kUsage);
+      return 2;
+    }
+    if (!ok) {
+      std::fprintf(stderr, "exact_diff: bad value in '%s' (--random takes a count, --scale a positive number)\n", a.c_str());
+      return 2;
+    }
   }
   auto count = [&](double n) { return static_cast<std::size_t>(n * scale); };
   std::printf("exact: differential test against %s; detected ISA %s\n", oracle_description().c_str(),
