@@ -173,7 +173,7 @@ __attribute__((noinline)) void handover_pass(const TrianglePair* pairs, Out* out
     ps.box.lo_z = h.lo[2][slot];
     ps.box.hi_z = h.hi[2][slot];
     Route route = Route::filtered;
-    const RelationAnswer a = finish<kRelation>(pairs[j], ps, (rest[k] & kGridFlag) != 0u, &route);
+    const RelationAnswer a = finish_pair<kRelation>(pairs[j], ps, (rest[k] & kGridFlag) != 0u, &route);
     if constexpr (kRelation) out[j] = a;
     else out[j] = to_overlap(a);
     ++routes.n[static_cast<int>(route)];

@@ -191,6 +191,20 @@ bool coplanar_grid(const double* c, Relation& out) {
   return coplanar_exact<kRelation>(c, project_of(c, largest_normal_axis(c)), out);
 }
 
+// Six points that share z exactly, with finite coordinates (`box`: theirs, its z extent zero):
+// T1's signs against π2 are zero without arithmetic, and with (x, y) on the 2-D grid every o2
+// there is exact, so coplanar_exact on (x, y) decides, without the 3-D grid test
+// (algorithms/exact/README.md, "Six points in one plane z = h: (x, y) before the 3-D grid test").
+// False: (x, y) off the 2-D grid, or an orientation there zero (a degenerate triangle); `finish`
+// then goes on as before. Out of line: the pairs that do not take it pay one comparison.
+template <bool kRelation>
+[[gnu::noinline]] bool coplanar_flat_z(const double* c, const Box& box, Relation& out) {
+  double mag[3];
+  box_magnitudes(box, mag);
+  const Projected xy = project_of(c, 2);
+  return on_grid2(xy, mag, 0, 1) && coplanar_exact<kRelation>(c, xy, out);
+}
+
 // The pair (18 coordinates at c, finite) when T1's exact signs against π2 are all zero: true and
 // `out` set when both triangles are proper (then they are coplanar), false when a triangle's
 // orientation in the chosen projection is zero (a degenerate triangle, or a normal whose largest
@@ -200,13 +214,9 @@ bool coplanar_grid(const double* c, Relation& out) {
 template <bool kRelation, class Grid>
 bool coplanar_known(const double* c, Grid& g, Relation& out) {
   if (g.state == 1) return coplanar_grid<kRelation>(c, out);
-  // off the 3-D grid (x, y) is tried first only for six points in one plane z = h, whose largest
-  // normal component is z, and only on the 2-D grid (algorithms/exact/README.md, "Coplanar pairs
-  // off the 3-D grid: (x, y) first")
-  const auto flat_z = [c] { return (c[2] == c[5]) & (c[2] == c[8]) & (c[2] == c[11]) & (c[2] == c[14]) & (c[2] == c[17]); };
-  if (flat_z())
-    if (const Projected xy = project_of(c, 2); on_grid2(xy, g.mag, 0, 1) && coplanar_exact<kRelation>(c, xy, out))
-      return true;
+  // six points in one plane z = h have had (x, y) on the 2-D grid tried before `finish`
+  // (coplanar_flat_z); off it their projection is T1's largest normal component's, z, as for the
+  // others (algorithms/exact/README.md, "Coplanar pairs off the 3-D grid: (x, y) first")
   const int k = largest_normal_axis(c);
   const int i = k == 2 ? 0 : k + 1, j = k == 0 ? 2 : k - 1;  // (k+1, k+2) mod 3
   const Projected p = project_of(c, k);
