@@ -41,9 +41,12 @@ namespace tritri::exact::detail {
 struct PairSigns {
   Box box;  // of the six points
   double bound;
-  double s1[3];   // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
-  double s2[3];   // T2's vertices against π1
+  // s[k]: lane 0 T1's vertex k against π2, (x - a2)·((b2 - a2)×(c2 - a2)), lane 1 T2's vertex k
+  // against π1 (s1[k], s2[k] below), as plane_values leaves them: three stores, no lane taken out
+  Double2 s[3];
   unsigned open;  // bit k: s1[k] within the bound, bit 3 + k: s2[k] (neither > B nor < -B)
+  double s1(int k) const { return s[k][0]; }
+  double s2(int k) const { return s[k][1]; }
 };
 
 // An interleaved six-bit mask (bit 2k: T1's vertex k, 2k + 1: T2's, as plane_values' lanes)
@@ -106,11 +109,10 @@ template <bool kRelation>
   const unsigned n[3] = {lt2(s[0], lo), lt2(s[1], lo), lt2(s[2], lo)};
   // bits 2k, 2k + 1: s1[k], s2[k] certain and positive (pos) or negative (neg)
   const unsigned pos = p[0] | p[1] << 2 | p[2] << 4, neg = n[0] | n[1] << 2 | n[2] << 4;
-  const double s1[3] = {s[0][0], s[1][0], s[2][0]}, s2[3] = {s[0][1], s[1][1], s[2][1]};
   // the values are written to `ps` only when the pair is left undecided
   const auto undecided = [&](Box box) {
     ps.bound = b, ps.open = ~kSplit[pos | neg] & 63u, ps.box = box;
-    for (int k = 0; k < 3; ++k) ps.s1[k] = s1[k], ps.s2[k] = s2[k];
+    for (int k = 0; k < 3; ++k) ps.s[k] = s[k];
     return -1;
   };
   if constexpr (kRelation) {
@@ -119,6 +121,7 @@ template <bool kRelation>
       // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
       // proves its triangle proper) and the planes certainly not parallel; else undecided
       const bool proper = ((sp | sn) & 7u) != 0u && ((sp | sn) & 070u) != 0u;
+      const double s1[3] = {s[0][0], s[1][0], s[2][0]}, s2[3] = {s[0][1], s[1][1], s[2][1]};
       if (proper & (certainly_slanted(s1, b) | certainly_slanted(s2, b))) return 0;
       return undecided(u);
     }
@@ -135,48 +138,13 @@ template <bool kRelation>
   return undecided(union_of(box_of(c), box_of(c + 9)));
 }
 
-// The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on
-// π2, so T1's vertex i equal to T2's vertex j has an exact value 0 against π2, and likewise
-// against π1; B bounds the error of both values, so neither is certain (algorithms/exact/README.md,
-// "The fixed cost of `finish`").
-// One look-up per pair: the bit arithmetic had cost about 12 instructions.
-inline constexpr auto kCandidates = [] {
-  std::array<unsigned short, 64> t{};
-  for (unsigned open = 0; open < 64; ++open) {
-    // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
-    const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
-    t[open] = static_cast<unsigned short>(rows & (open >> 3) * 0x49u);
-  }
-  return t;
-}();
-inline unsigned shared_candidates(unsigned open) { return kCandidates[open & 63u]; }
-
-// Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
-// of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
-// kFirst: only whether there is one (the overlap level), the first found alone.
-template <bool kFirst>
-inline unsigned shared_vertices(const double* c, unsigned candidates) {
-  if (candidates == 0x1ffu) return all_nine_shared<kFirst>(c);  // every value within the bound
-  static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
-  unsigned bits = 0;
-  for (unsigned m = candidates; m != 0u; m &= m - 1u) {
-    const int k = __builtin_ctz(m);
-    const double* a = c + kRow[k];
-    const double* b = c + kCol[k];
-    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) {
-      bits |= 1u << k;
-      if (kFirst) break;
-    }
-  }
-  return bits;
-}
-
 // All 18 coordinates finite. A finite bound and six values of which none is NaN prove it (a NaN
 // coordinate makes three values NaN, an infinite one the bound +inf: algorithms/exact/README.md,
-// "The fixed cost of `finish`"); else the coordinates themselves decide.
+// "The fixed cost of `finish`"); else the coordinates themselves decide. The values summed in
+// their lanes (T1's three in lane 0, T2's in lane 1): a lane is NaN when one of its values is.
 inline bool finite_after_filter(const double* c, const PairSigns& ps) {
-  const double sum = ((ps.s1[0] + ps.s1[1]) + (ps.s1[2] + ps.s2[0])) + (ps.s2[1] + ps.s2[2]);
-  return ((ps.bound < __builtin_inf()) & (sum == sum)) || finite18(c);
+  const Double2 sum = (ps.s[0] + ps.s[1]) + ps.s[2];
+  return ((ps.bound < __builtin_inf()) & all2(sum == sum)) || finite18(c);
 }
 
 // The sign of a filter value when certain, else 0.
@@ -186,7 +154,7 @@ inline int certain_sign(double s, double b) { return (s > b) - (s < -b); }
 // when the filter's certain signs decide it; Relation::unsupported otherwise (undecided).
 inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   int s1[3], s2[3];
-  for (int k = 0; k < 3; ++k) s1[k] = certain_sign(ps.s1[k], ps.bound), s2[k] = certain_sign(ps.s2[k], ps.bound);
+  for (int k = 0; k < 3; ++k) s1[k] = certain_sign(ps.s1(k), ps.bound), s2[k] = certain_sign(ps.s2(k), ps.bound);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       if (!((bits >> (3 * i + j)) & 1u)) continue;
@@ -209,12 +177,15 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes,
 // 2 yes in 40 bits). The largest |coordinate| per axis comes from the filter's box (finite: exact).
 struct LazyGrid {
-  // `grid` 1: known on the grid; else unknown (so `points` is on_grid's whenever state is 0)
-  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid > 0 ? 1 : -1) { box_magnitudes(box, mag); }
+  // `known`: the grid test's answer when already made (1 on it, 0 off it with on_grid's `pts`), -1
+  // unknown; `points` is on_grid's whenever state is 0
+  LazyGrid(const double* pair, const Box& box, int known, unsigned pts = 0u) : c(pair), state(known), points(pts) {
+    box_magnitudes(box, mag);
+  }
   const double* c;
   int state;
   int ints = -1;
-  unsigned points = 0u;  // off the grid: grid_points' mask from on_grid, when `want_points`
+  unsigned points;  // off the grid: grid_points' mask from on_grid, when `want_points`
   bool want_points = true;
   double mag[3];
   intexact::PairInt61 x;
@@ -257,16 +228,15 @@ struct LazyGrid {
   return sign_o3_within(v, g, a, b, cc, d);
 }
 
-// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
-// proper, neither sign triple one-sided nor all zero: the canonical order by one kCanon row, G1
-// and G2 in two lanes against the pair's bound (one branch per exit, as the filter's step 3; the
-// values are finite when B is, and no comparison with B = +inf holds), then their exact signs
-// (algorithms/exact/README.md, "Crossing planes from exact signs: one table row, G1 and G2 in two
-// lanes").
+// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs as their triples'
+// sign_index i1 (T1's) and i2 (T2's), both triangles proper, neither triple one-sided nor all
+// zero: the canonical order by one kCanon row, G1 and G2 in two lanes against the pair's bound (one
+// branch per exit, as the filter's step 3; the values are finite when B is, and no comparison with
+// B = +inf holds), then their exact signs (algorithms/exact/README.md, "Crossing planes from exact
+// signs: one table row, G1 and G2 in two lanes").
 template <bool kRelation>
-[[gnu::always_inline]] inline Relation crossing_known(const double* c, const int s1[3], const int s2[3], double bound,
-                                                     LazyGrid& g) {
-  const unsigned char* o = kCanon[27 * sign_index(s1) + sign_index(s2)].data();
+[[gnu::always_inline]] inline Relation crossing_known(const double* c, int i1, int i2, double bound, LazyGrid& g) {
+  const unsigned char* o = kCanon[27 * i1 + i2].data();
   const Double2 gg = gd_lanes(c, o);
   const double hi = dmax(gg[0], gg[1]);
   if (hi > bound) return Relation::disjoint;
@@ -278,18 +248,52 @@ template <bool kRelation>
     if (g2 > 0) return Relation::disjoint;
   }
   if (!kRelation) return Relation::cross;  // meets
+  int s1[3], s2[3];
+  signs_of_index(i1, s1), signs_of_index(i2, s2);
   if (g1 == 0 || g2 == 0 || s1[o[0] / 3] == 0 || s2[o[3] / 3 - 3] == 0) return Relation::touch_point;
   return (zero_count(s1) == 2 || zero_count(s2) == 2) ? Relation::touch_segment : Relation::cross;
 }
 
+// Off the grid with a value within the bound: the exact signs one by one into `known` (T1's, then
+// T2's), certain ones kept; a pair with T1's three zeros and both triangles proper decided in 2-D
+// (true, `rel`). Apart from `finish`, which on the grid reads the six signs from the values.
+template <bool kRelation>
+[[gnu::noinline]] bool signs_off_grid(const double* c, const PairSigns& ps, bool zero1, LazyGrid& g, int known[6],
+                                      Relation& rel) {
+  const double b = ps.bound;
+  // six points on one axis-parallel plane prove T1's zeros without arithmetic (their values are
+  // computed zeros); a value within the bound against a triangle in an axis-parallel plane by
+  // comparisons and one o2; else its exact sign one by one
+  if (zero1 && flat_pair(c))
+    known[0] = known[1] = known[2] = 0;
+  else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
+    // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
+    for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
+      known[k] = sign_o3(ps.s1(k), t, g, 3, 4, 5, k);
+  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
+  // (coplanar.hpp); degenerate input goes on to the classification
+  const bool any1 = (known[0] | known[1] | known[2]) != 0;
+  if (!any1 && coplanar_known<kRelation>(c, g, rel)) return true;
+  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
+  // the classification reads s2 only when both are proper, so zeros are its exact signs
+  if (!any1)
+    known[3] = known[4] = known[5] = 0;
+  else if (!((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
+    for (const double t = plane_bound(c, ps.box, b, ps.open, 070u); const int k : {0, 1, 2})
+      known[3 + k] = sign_o3(ps.s2(k), t, g, 0, 1, 2, 3 + k);
+  return false;
+}
+
 // After an undecided filter (`grid`: the pair is known to pass the grid test, so plain double is
-// exact for it): non-finite input declined; the shared-vertex shortcuts; the six plane signs made
-// exact (certain ones kept, the others resolved one by one); one-sided, crossing and coplanar pairs
-// decided from them; the rest (degenerate, parallel candidates) by the classification. Proved in
+// exact for it; `known`, `points`: the grid test already made by `finish`, as LazyGrid's): non-finite
+// input declined; the shared-vertex shortcuts; the six plane signs made exact (certain ones kept,
+// the others resolved one by one); one-sided, crossing and coplanar pairs decided from them; the
+// rest (degenerate, parallel candidates) by the classification. Proved in
 // algorithms/exact/README.md, "Exact signs after the filter"; at the overlap level only the
 // emptiness of the answer counts (classify.hpp).
 template <bool kRelation>
-RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
+[[gnu::noinline]] RelationAnswer finish_any(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route,
+                                            int known_grid, unsigned points) {
   const double* c = pair.t1[0].data();
   // the comparisons need no finiteness, their answer does (algorithms/exact/README.md, "The grid
   // test first: finiteness, flat pairs and the signs from it")
@@ -301,10 +305,10 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
       return answer_with(rel);
     }
   }
-  LazyGrid g{c, ps.box, grid ? 1 : -1};
+  LazyGrid g{c, ps.box, grid ? 1 : known_grid, points};
   // T1's three values computed as zeros: off the grid the flat and coplanar steps decide most such
   // pairs, not sign_o3_within, so the own-points mask is not made for them (0: no shortcut)
-  const bool zero1 = all_zero3(ps.s1);
+  const bool zero1 = all_zero3(ps.s);
   g.want_points = !zero1;
   // a value within the bound needs the grid test: made here, a pass proves the coordinates finite
   if (!(!grid && ps.open != 0u && g.on()) && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
@@ -315,46 +319,31 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
     if (Relation rel; coplanar_grid<kRelation>(c, rel)) return answer_with(rel);
     return solve<kRelation>(pair, route);  // a degenerate triangle
   }
-  const double b = ps.bound;
-  // every value certain or exact (on the grid): the six signs are the values' own
+  // every value certain or exact (on the grid): the six signs are the values' own, read as the two
+  // triples' sign_index at once; T1's are not all zero (zero1 failed, or every value is certain)
   const bool exact = (ps.open == 0u) | (g.state == 1);
-  int known[6];
+  int known[6], i1, i2;
   if (exact) {
-    value_signs(ps.s1, ps.s2, known);
+    const Long2 i = value_sign_indices(ps.s);
+    i1 = static_cast<int>(i[0]), i2 = static_cast<int>(i[1]);
   } else {
-    // off the grid: six points on one axis-parallel plane prove T1's zeros without arithmetic
-    // (their values are computed zeros); a value within the bound against a triangle in an
-    // axis-parallel plane by comparisons and one o2; else its exact sign one by one
-    if (zero1 && flat_pair(c))
-      known[0] = known[1] = known[2] = 0;
-    else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
-      // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
-      for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
-        known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);
+    if (Relation rel; signs_off_grid<kRelation>(c, ps, zero1, g, known, rel)) {
+      if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
+      return answer_with(rel);
+    }
+    i1 = sign_index(known), i2 = sign_index(known + 3);
   }
-  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
-  // (coplanar.hpp); degenerate input goes on to the classification (exact: zero1 failed, a sign not)
-  const bool any1 = exact || (known[0] | known[1] | known[2]) != 0;
-  if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
-    if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
-    return answer_with(rel);
-  }
-  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
-  // the classification reads s2 only when both are proper, so zeros are its exact signs
-  if (!any1)
-    known[3] = known[4] = known[5] = 0;
-  else if (!exact && !((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
-    for (const double t = plane_bound(c, ps.box, b, ps.open, 070u); const int k : {0, 1, 2})
-      known[3 + k] = sign_o3(ps.s2[k], t, g, 0, 1, 2, 3 + k);
-  const bool any2 = (known[3] | known[4] | known[5]) != 0;
-  if (any1 & any2) {  // both triangles proper, the planes distinct
-    const bool one1 = one_sided(known), one2 = one_sided(known + 3);
+  // both triangles proper, the planes distinct: neither triple all zero (index 13); one-sided
+  // triples are all negative (0) or all positive (26)
+  if ((i1 != 13) & (i2 != 13)) {
+    const bool one1 = (i1 == 0) | (i1 == 26), one2 = (i2 == 0) | (i2 == 26);
     if (!(one1 | one2) || !kRelation || !(one1 & one2)) {
       if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
       if (one1 | one2) return answer_with(Relation::disjoint);  // parallel planes: both one-sided
-      return answer_with(crossing_known<kRelation>(c, known, known + 3, b, g));
+      return answer_with(crossing_known<kRelation>(c, i1, i2, ps.bound, g));
     }
   }
+  if (exact) signs_of_index(i1, known), signs_of_index(i2, known + 3);
   Tri t1, t2;
   double unused[18];
   gather(pair, t1, t2, unused);
@@ -364,6 +353,30 @@ RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, 
   }
   if (route) *route = Route::filtered;
   return classify<Filtered, kRelation>(t1, t2, known);
+}
+
+// `finish_any` with its most common route at the overlap level in front, which saves no registers
+// (it calls nothing but finish_any, last): no candidate for a shared vertex, T1's values not all
+// zero, a value within the bound, the pair on the grid and neither triple all zero. On the grid
+// every value the filter computed and G1, G2 are exact, so the signs are the values' own and the
+// pair meets exactly when neither G1 nor G2 is positive (algorithms/exact/README.md, "Crossing
+// planes from exact signs: one table row, G1 and G2 in two lanes", "The common route in front").
+template <bool kRelation>
+RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
+  if (kRelation || grid || ps.open == 0u || shared_candidates(ps.open) != 0u || all_zero3(ps.s))
+    return finish_any<kRelation>(pair, ps, grid, route, -1, 0u);
+  const double* c = pair.t1[0].data();
+  double mag[3];
+  box_magnitudes(ps.box, mag);
+  unsigned points;  // a pass proves the coordinates finite (finite_after_filter not needed)
+  if (!on_grid(c, mag, points)) return finish_any<kRelation>(pair, ps, grid, route, 0, points);
+  const Long2 i = value_sign_indices(ps.s);
+  const int i1 = static_cast<int>(i[0]), i2 = static_cast<int>(i[1]);
+  if ((i1 == 13) | (i2 == 13)) return finish_any<kRelation>(pair, ps, grid, route, 1, 0u);
+  if (route) *route = Route::grid;
+  if ((i1 == 0) | (i1 == 26) | (i2 == 0) | (i2 == 26)) return answer_with(Relation::disjoint);  // one-sided
+  const Double2 gg = gd_lanes(c, kCanon[27 * i1 + i2].data());
+  return answer_with(dmax(gg[0], gg[1]) > 0.0 ? Relation::disjoint : Relation::cross);
 }
 
 // One pair: the filter, then `finish`.
