@@ -166,7 +166,7 @@ __attribute__((noinline)) void handover_pass(const TrianglePair* pairs, Out* out
     const std::uint32_t j = pending[slot];
     PairSigns ps;
     ps.bound = h.bound[slot];
-    for (int v = 0; v < 3; ++v) ps.s[v] = Double2{h.s1[v][slot], h.s2[v][slot]};
+    for (int v = 0; v < 3; ++v) ps.s1[v] = h.s1[v][slot], ps.s2[v] = h.s2[v][slot];
     ps.open = static_cast<unsigned>(h.open[slot]);
     ps.box.lo = Double2{h.lo[0][slot], h.lo[1][slot]};
     ps.box.hi = Double2{h.hi[0][slot], h.hi[1][slot]};

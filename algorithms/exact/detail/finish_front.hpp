@@ -7,30 +7,32 @@
 #include "algorithms/exact/detail/pair_box.hpp"
 
 #include <array>
+#include <cstdint>
 #include <cstring>
 
 namespace tritri::exact::detail {
 
 // The exact signs of the filter's six values as crossing.hpp's sign_index of each triangle's triple,
-// both at once in the values' lanes (lane 0: T1's against π2, lane 1: T2's against π1), each value
+// both at once in two lanes (lane 0: T1's s1 against π2, lane 1: T2's s2 against π1), each value
 // certain or exact: a value beyond the bound has the sign of its exact value, and on the grid every
 // value is the exact one. (v < 0) - (v > 0) of the all-ones masks is sgn(v), NaN (0) included;
 // then 9 sgn(s0) + 3 sgn(s1) + sgn(s2) + 13 by shifts (SSE2 has no 64-bit multiply).
-inline Long2 value_sign_indices(const Double2 (&s)[3]) {
+inline Long2 value_sign_indices(const double s1[3], const double s2[3]) {
+  const Double2 s[3] = {{s1[0], s2[0]}, {s1[1], s2[1]}, {s1[2], s2[2]}};
   Long2 g[3];
   for (int k = 0; k < 3; ++k) g[k] = (s[k] < 0.0) - (s[k] > 0.0);
   const Long2 thirteen = {13, 13};
   return ((g[0] << 3) + g[0]) + ((g[1] << 1) + g[1]) + (g[2] + thirteen);
 }
 
-// T1's three values (lane 0 of each) are zeros (of either sign): x == 0.0 exactly when its bits
-// without the sign bit are zero, so the or of the three, shifted past the sign bit, is zero exactly
-// when all three compare equal to 0.0 (a NaN has exponent bits set). One branch, where three
-// comparisons with zero had cost a parity test each.
-inline bool all_zero3(const Double2 (&s)[3]) {
-  const Long2 bits = reinterpret_cast<const Long2&>(s[0]) | reinterpret_cast<const Long2&>(s[1]) |
-                     reinterpret_cast<const Long2&>(s[2]);
-  return (static_cast<unsigned long long>(bits[0]) << 1) == 0u;
+// The three values are zeros (of either sign): x == 0.0 exactly when its bits without the sign
+// bit are zero, so the or of the three, shifted past the sign bit, is zero exactly when all three
+// compare equal to 0.0 (a NaN has exponent bits set). One branch, where three comparisons with
+// zero had cost a parity test each.
+inline bool all_zero3(const double s[3]) {
+  std::uint64_t b[3];
+  std::memcpy(b, s, sizeof b);
+  return ((b[0] | b[1] | b[2]) << 1) == 0u;
 }
 
 // shared_vertices (one_pair.hpp) when all nine pairs (i, j) are candidates (coplanar and nearly

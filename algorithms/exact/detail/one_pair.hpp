@@ -41,12 +41,9 @@ namespace tritri::exact::detail {
 struct PairSigns {
   Box box;  // of the six points
   double bound;
-  // s[k]: lane 0 T1's vertex k against π2, (x - a2)·((b2 - a2)×(c2 - a2)), lane 1 T2's vertex k
-  // against π1 (s1[k], s2[k] below), as plane_values leaves them: three stores, no lane taken out
-  Double2 s[3];
+  double s1[3];   // T1's vertices against π2: (x - a2)·((b2 - a2)×(c2 - a2))
+  double s2[3];   // T2's vertices against π1
   unsigned open;  // bit k: s1[k] within the bound, bit 3 + k: s2[k] (neither > B nor < -B)
-  double s1(int k) const { return s[k][0]; }
-  double s2(int k) const { return s[k][1]; }
 };
 
 // An interleaved six-bit mask (bit 2k: T1's vertex k, 2k + 1: T2's, as plane_values' lanes)
@@ -109,10 +106,11 @@ template <bool kRelation>
   const unsigned n[3] = {lt2(s[0], lo), lt2(s[1], lo), lt2(s[2], lo)};
   // bits 2k, 2k + 1: s1[k], s2[k] certain and positive (pos) or negative (neg)
   const unsigned pos = p[0] | p[1] << 2 | p[2] << 4, neg = n[0] | n[1] << 2 | n[2] << 4;
+  const double s1[3] = {s[0][0], s[1][0], s[2][0]}, s2[3] = {s[0][1], s[1][1], s[2][1]};
   // the values are written to `ps` only when the pair is left undecided
   const auto undecided = [&](Box box) {
     ps.bound = b, ps.open = ~kSplit[pos | neg] & 63u, ps.box = box;
-    for (int k = 0; k < 3; ++k) ps.s[k] = s[k];
+    for (int k = 0; k < 3; ++k) ps.s1[k] = s1[k], ps.s2[k] = s2[k];
     return -1;
   };
   if constexpr (kRelation) {
@@ -121,7 +119,6 @@ template <bool kRelation>
       // one-sided: `disjoint` once both are certainly proper (a certain sign against a plane
       // proves its triangle proper) and the planes certainly not parallel; else undecided
       const bool proper = ((sp | sn) & 7u) != 0u && ((sp | sn) & 070u) != 0u;
-      const double s1[3] = {s[0][0], s[1][0], s[2][0]}, s2[3] = {s[0][1], s[1][1], s[2][1]};
       if (proper & (certainly_slanted(s1, b) | certainly_slanted(s2, b))) return 0;
       return undecided(u);
     }
@@ -140,11 +137,10 @@ template <bool kRelation>
 
 // All 18 coordinates finite. A finite bound and six values of which none is NaN prove it (a NaN
 // coordinate makes three values NaN, an infinite one the bound +inf: algorithms/exact/README.md,
-// "The fixed cost of `finish`"); else the coordinates themselves decide. The values summed in
-// their lanes (T1's three in lane 0, T2's in lane 1): a lane is NaN when one of its values is.
+// "The fixed cost of `finish`"); else the coordinates themselves decide.
 inline bool finite_after_filter(const double* c, const PairSigns& ps) {
-  const Double2 sum = (ps.s[0] + ps.s[1]) + ps.s[2];
-  return ((ps.bound < __builtin_inf()) & all2(sum == sum)) || finite18(c);
+  const double sum = ((ps.s1[0] + ps.s1[1]) + (ps.s1[2] + ps.s2[0])) + (ps.s2[1] + ps.s2[2]);
+  return ((ps.bound < __builtin_inf()) & (sum == sum)) || finite18(c);
 }
 
 // The sign of a filter value when certain, else 0.
@@ -154,7 +150,7 @@ inline int certain_sign(double s, double b) { return (s > b) - (s < -b); }
 // when the filter's certain signs decide it; Relation::unsupported otherwise (undecided).
 inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
   int s1[3], s2[3];
-  for (int k = 0; k < 3; ++k) s1[k] = certain_sign(ps.s1(k), ps.bound), s2[k] = certain_sign(ps.s2(k), ps.bound);
+  for (int k = 0; k < 3; ++k) s1[k] = certain_sign(ps.s1[k], ps.bound), s2[k] = certain_sign(ps.s2[k], ps.bound);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       if (!((bits >> (3 * i + j)) & 1u)) continue;
@@ -256,9 +252,9 @@ template <bool kRelation>
 
 // Off the grid with a value within the bound: the exact signs one by one into `known` (T1's, then
 // T2's), certain ones kept; a pair with T1's three zeros and both triangles proper decided in 2-D
-// (true, `rel`). Apart from `finish`, which on the grid reads the six signs from the values.
+// (true, `rel`). A step of finish_any (inlined there) where the six signs are not the values' own.
 template <bool kRelation>
-[[gnu::noinline]] bool signs_off_grid(const double* c, const PairSigns& ps, bool zero1, LazyGrid& g, int known[6],
+[[gnu::always_inline]] inline bool signs_off_grid(const double* c, const PairSigns& ps, bool zero1, LazyGrid& g, int known[6],
                                       Relation& rel) {
   const double b = ps.bound;
   // six points on one axis-parallel plane prove T1's zeros without arithmetic (their values are
@@ -269,7 +265,7 @@ template <bool kRelation>
   else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
     // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
     for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
-      known[k] = sign_o3(ps.s1(k), t, g, 3, 4, 5, k);
+      known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);
   // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
   // (coplanar.hpp); degenerate input goes on to the classification
   const bool any1 = (known[0] | known[1] | known[2]) != 0;
@@ -280,7 +276,7 @@ template <bool kRelation>
     known[3] = known[4] = known[5] = 0;
   else if (!((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
     for (const double t = plane_bound(c, ps.box, b, ps.open, 070u); const int k : {0, 1, 2})
-      known[3 + k] = sign_o3(ps.s2(k), t, g, 0, 1, 2, 3 + k);
+      known[3 + k] = sign_o3(ps.s2[k], t, g, 0, 1, 2, 3 + k);
   return false;
 }
 
@@ -308,7 +304,7 @@ template <bool kRelation>
   LazyGrid g{c, ps.box, grid ? 1 : known_grid, points};
   // T1's three values computed as zeros: off the grid the flat and coplanar steps decide most such
   // pairs, not sign_o3_within, so the own-points mask is not made for them (0: no shortcut)
-  const bool zero1 = all_zero3(ps.s);
+  const bool zero1 = all_zero3(ps.s1);
   g.want_points = !zero1;
   // a value within the bound needs the grid test: made here, a pass proves the coordinates finite
   if (!(!grid && ps.open != 0u && g.on()) && !finite_after_filter(c, ps)) return solve<kRelation>(pair, route);
@@ -324,7 +320,7 @@ template <bool kRelation>
   const bool exact = (ps.open == 0u) | (g.state == 1);
   int known[6], i1, i2;
   if (exact) {
-    const Long2 i = value_sign_indices(ps.s);
+    const Long2 i = value_sign_indices(ps.s1, ps.s2);
     i1 = static_cast<int>(i[0]), i2 = static_cast<int>(i[1]);
   } else {
     if (Relation rel; signs_off_grid<kRelation>(c, ps, zero1, g, known, rel)) {
@@ -355,6 +351,14 @@ template <bool kRelation>
   return classify<Filtered, kRelation>(t1, t2, known);
 }
 
+// `open` masks that may take finish's front: a value within the bound and no candidate for a
+// shared vertex (shared_candidates 0), one look-up.
+inline constexpr auto kFront = [] {
+  std::array<bool, 64> t{};
+  for (unsigned open = 1; open < 64; ++open) t[open] = kCandidates[open] == 0u;
+  return t;
+}();
+
 // `finish_any` with its most common route at the overlap level in front, which saves no registers
 // (it calls nothing but finish_any, last): no candidate for a shared vertex, T1's values not all
 // zero, a value within the bound, the pair on the grid and neither triple all zero. On the grid
@@ -362,15 +366,15 @@ template <bool kRelation>
 // pair meets exactly when neither G1 nor G2 is positive (algorithms/exact/README.md, "Crossing
 // planes from exact signs: one table row, G1 and G2 in two lanes", "The common route in front").
 template <bool kRelation>
-RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
-  if (kRelation || grid || ps.open == 0u || shared_candidates(ps.open) != 0u || all_zero3(ps.s))
+[[gnu::always_inline]] inline RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
+  if (kRelation || grid || !kFront[ps.open & 63u] || all_zero3(ps.s1))
     return finish_any<kRelation>(pair, ps, grid, route, -1, 0u);
   const double* c = pair.t1[0].data();
   double mag[3];
   box_magnitudes(ps.box, mag);
   unsigned points;  // a pass proves the coordinates finite (finite_after_filter not needed)
   if (!on_grid(c, mag, points)) return finish_any<kRelation>(pair, ps, grid, route, 0, points);
-  const Long2 i = value_sign_indices(ps.s);
+  const Long2 i = value_sign_indices(ps.s1, ps.s2);
   const int i1 = static_cast<int>(i[0]), i2 = static_cast<int>(i[1]);
   if ((i1 == 13) | (i2 == 13)) return finish_any<kRelation>(pair, ps, grid, route, 1, 0u);
   if (route) *route = Route::grid;

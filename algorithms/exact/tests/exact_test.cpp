@@ -2140,8 +2140,7 @@ TEST(FinishFront, ValueSignIndicesAreTheIndicesOfTheSigns) {
   for (int n = 0; n < 20000; ++n) {
     double v[6];
     for (double& x : v) x = pool[r.integer(0, std::size(pool) - 1)];
-    const ex::detail::Double2 s[3] = {{v[0], v[3]}, {v[1], v[4]}, {v[2], v[5]}};
-    const ex::detail::Long2 got = ex::detail::value_sign_indices(s);
+    const ex::detail::Long2 got = ex::detail::value_sign_indices(v, v + 3);
     for (int t = 0; t < 2; ++t) {
       const int want[3] = {ex::sgn(v[3 * t]), ex::sgn(v[3 * t + 1]), ex::sgn(v[3 * t + 2])};
       ASSERT_EQ(got[t], ex::detail::sign_index(want)) << n << " " << t;
