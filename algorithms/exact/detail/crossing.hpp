@@ -15,8 +15,6 @@ namespace tritri::exact::detail {
 
 // kLoneFlip's index of a triple of exact signs (each -1, 0 or 1): 9(s0 + 1) + 3(s1 + 1) + s2 + 1.
 constexpr int sign_index(const int s[3]) { return 9 * s[0] + 3 * s[1] + s[2] + 13; }
-// Its inverse: the triple of index i (0..26), as kLoneFlip's table is built.
-inline void signs_of_index(int i, int s[3]) { s[0] = i / 9 - 1, s[1] = i / 3 % 3 - 1, s[2] = i % 3 - 1; }
 
 // kCanon[27 sign_index(s1) + sign_index(s2)] = (p1, q1, r1, p2, q2, r2) as coordinate offsets
 // 3i of the pair's points i (T1's 0..2, T2's 3..5): each triangle's lone vertex first (kLoneFlip), then its

@@ -135,6 +135,42 @@ template <bool kRelation>
   return undecided(union_of(box_of(c), box_of(c + 9)));
 }
 
+// The bits 3i + j that shared_vertices can set, from the filter's values: a vertex of T2 is on
+// π2, so T1's vertex i equal to T2's vertex j has an exact value 0 against π2, and likewise
+// against π1; B bounds the error of both values, so neither is certain (algorithms/exact/README.md,
+// "The fixed cost of `finish`").
+// One look-up per pair: the bit arithmetic had cost about 12 instructions.
+inline constexpr auto kCandidates = [] {
+  std::array<unsigned short, 64> t{};
+  for (unsigned open = 0; open < 64; ++open) {
+    // T1's bit i to bits 3i..3i+2, T2's three bits repeated at 0, 3 and 6
+    const unsigned rows = ((open & 1u) | (open & 2u) << 2 | (open & 4u) << 4) * 7u;
+    t[open] = static_cast<unsigned short>(rows & (open >> 3) * 0x49u);
+  }
+  return t;
+}();
+inline unsigned shared_candidates(unsigned open) { return kCandidates[open & 63u]; }
+
+// Bit 3i + j, among the bits of `candidates`: T1's vertex i equals T2's vertex j (exact comparison
+// of the coordinates: -0 equals +0). Most candidates differ in x, so y and z are read only after.
+// kFirst: only whether there is one (the overlap level), the first found alone.
+template <bool kFirst>
+inline unsigned shared_vertices(const double* c, unsigned candidates) {
+  if (candidates == 0x1ffu) return all_nine_shared<kFirst>(c);  // every value within the bound
+  static constexpr unsigned char kRow[9] = {0, 0, 0, 3, 3, 3, 6, 6, 6}, kCol[9] = {9, 12, 15, 9, 12, 15, 9, 12, 15};
+  unsigned bits = 0;
+  for (unsigned m = candidates; m != 0u; m &= m - 1u) {
+    const int k = __builtin_ctz(m);
+    const double* a = c + kRow[k];
+    const double* b = c + kCol[k];
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) {
+      bits |= 1u << k;
+      if (kFirst) break;
+    }
+  }
+  return bits;
+}
+
 // All 18 coordinates finite. A finite bound and six values of which none is NaN prove it (a NaN
 // coordinate makes three values NaN, an infinite one the bound +inf: algorithms/exact/README.md,
 // "The fixed cost of `finish`"); else the coordinates themselves decide.
@@ -173,15 +209,12 @@ inline Relation shared_relation(unsigned bits, const PairSigns& ps) {
 // and only when a value within the bound needs it (`state`, `ints`: -1 not yet known, 0 no, 1 yes,
 // 2 yes in 40 bits). The largest |coordinate| per axis comes from the filter's box (finite: exact).
 struct LazyGrid {
-  // `known`: the grid test's answer when already made (1 on it, 0 off it with on_grid's `pts`), -1
-  // unknown; `points` is on_grid's whenever state is 0
-  LazyGrid(const double* pair, const Box& box, int known, unsigned pts = 0u) : c(pair), state(known), points(pts) {
-    box_magnitudes(box, mag);
-  }
+  // `grid` 1: known on the grid; else unknown (so `points` is on_grid's whenever state is 0)
+  LazyGrid(const double* pair, const Box& box, int grid) : c(pair), state(grid > 0 ? 1 : -1) { box_magnitudes(box, mag); }
   const double* c;
   int state;
   int ints = -1;
-  unsigned points;  // off the grid: grid_points' mask from on_grid, when `want_points`
+  unsigned points = 0u;  // off the grid: grid_points' mask from on_grid, when `want_points`
   bool want_points = true;
   double mag[3];
   intexact::PairInt61 x;
@@ -224,15 +257,16 @@ struct LazyGrid {
   return sign_o3_within(v, g, a, b, cc, d);
 }
 
-// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs as their triples'
-// sign_index i1 (T1's) and i2 (T2's), both triangles proper, neither triple one-sided nor all
-// zero: the canonical order by one kCanon row, G1 and G2 in two lanes against the pair's bound (one
-// branch per exit, as the filter's step 3; the values are finite when B is, and no comparison with
-// B = +inf holds), then their exact signs (algorithms/exact/README.md, "Crossing planes from exact
-// signs: one table row, G1 and G2 in two lanes").
+// Crossing planes (classify.hpp's `crossing`) from the six exact plane signs, both triangles
+// proper, neither sign triple one-sided nor all zero: the canonical order by one kCanon row, G1
+// and G2 in two lanes against the pair's bound (one branch per exit, as the filter's step 3; the
+// values are finite when B is, and no comparison with B = +inf holds), then their exact signs
+// (algorithms/exact/README.md, "Crossing planes from exact signs: one table row, G1 and G2 in two
+// lanes").
 template <bool kRelation>
-[[gnu::always_inline]] inline Relation crossing_known(const double* c, int i1, int i2, double bound, LazyGrid& g) {
-  const unsigned char* o = kCanon[27 * i1 + i2].data();
+[[gnu::always_inline]] inline Relation crossing_known(const double* c, const int s1[3], const int s2[3], double bound,
+                                                     LazyGrid& g) {
+  const unsigned char* o = kCanon[27 * sign_index(s1) + sign_index(s2)].data();
   const Double2 gg = gd_lanes(c, o);
   const double hi = dmax(gg[0], gg[1]);
   if (hi > bound) return Relation::disjoint;
@@ -244,52 +278,18 @@ template <bool kRelation>
     if (g2 > 0) return Relation::disjoint;
   }
   if (!kRelation) return Relation::cross;  // meets
-  int s1[3], s2[3];
-  signs_of_index(i1, s1), signs_of_index(i2, s2);
   if (g1 == 0 || g2 == 0 || s1[o[0] / 3] == 0 || s2[o[3] / 3 - 3] == 0) return Relation::touch_point;
   return (zero_count(s1) == 2 || zero_count(s2) == 2) ? Relation::touch_segment : Relation::cross;
 }
 
-// Off the grid with a value within the bound: the exact signs one by one into `known` (T1's, then
-// T2's), certain ones kept; a pair with T1's three zeros and both triangles proper decided in 2-D
-// (true, `rel`). A step of finish_any (inlined there) where the six signs are not the values' own.
-template <bool kRelation>
-[[gnu::always_inline]] inline bool signs_off_grid(const double* c, const PairSigns& ps, bool zero1, LazyGrid& g, int known[6],
-                                      Relation& rel) {
-  const double b = ps.bound;
-  // six points on one axis-parallel plane prove T1's zeros without arithmetic (their values are
-  // computed zeros); a value within the bound against a triangle in an axis-parallel plane by
-  // comparisons and one o2; else its exact sign one by one
-  if (zero1 && flat_pair(c))
-    known[0] = known[1] = known[2] = 0;
-  else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
-    // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
-    for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
-      known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);
-  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
-  // (coplanar.hpp); degenerate input goes on to the classification
-  const bool any1 = (known[0] | known[1] | known[2]) != 0;
-  if (!any1 && coplanar_known<kRelation>(c, g, rel)) return true;
-  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
-  // the classification reads s2 only when both are proper, so zeros are its exact signs
-  if (!any1)
-    known[3] = known[4] = known[5] = 0;
-  else if (!((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
-    for (const double t = plane_bound(c, ps.box, b, ps.open, 070u); const int k : {0, 1, 2})
-      known[3 + k] = sign_o3(ps.s2[k], t, g, 0, 1, 2, 3 + k);
-  return false;
-}
-
 // After an undecided filter (`grid`: the pair is known to pass the grid test, so plain double is
-// exact for it; `known`, `points`: the grid test already made by `finish`, as LazyGrid's): non-finite
-// input declined; the shared-vertex shortcuts; the six plane signs made exact (certain ones kept,
-// the others resolved one by one); one-sided, crossing and coplanar pairs decided from them; the
-// rest (degenerate, parallel candidates) by the classification. Proved in
+// exact for it): non-finite input declined; the shared-vertex shortcuts; the six plane signs made
+// exact (certain ones kept, the others resolved one by one); one-sided, crossing and coplanar pairs
+// decided from them; the rest (degenerate, parallel candidates) by the classification. Proved in
 // algorithms/exact/README.md, "Exact signs after the filter"; at the overlap level only the
 // emptiness of the answer counts (classify.hpp).
 template <bool kRelation>
-[[gnu::noinline]] RelationAnswer finish_any(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route,
-                                            int known_grid, unsigned points) {
+RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
   const double* c = pair.t1[0].data();
   // the comparisons need no finiteness, their answer does (algorithms/exact/README.md, "The grid
   // test first: finiteness, flat pairs and the signs from it")
@@ -301,7 +301,7 @@ template <bool kRelation>
       return answer_with(rel);
     }
   }
-  LazyGrid g{c, ps.box, grid ? 1 : known_grid, points};
+  LazyGrid g{c, ps.box, grid ? 1 : -1};
   // T1's three values computed as zeros: off the grid the flat and coplanar steps decide most such
   // pairs, not sign_o3_within, so the own-points mask is not made for them (0: no shortcut)
   const bool zero1 = all_zero3(ps.s1);
@@ -315,31 +315,46 @@ template <bool kRelation>
     if (Relation rel; coplanar_grid<kRelation>(c, rel)) return answer_with(rel);
     return solve<kRelation>(pair, route);  // a degenerate triangle
   }
-  // every value certain or exact (on the grid): the six signs are the values' own, read as the two
-  // triples' sign_index at once; T1's are not all zero (zero1 failed, or every value is certain)
+  const double b = ps.bound;
+  // every value certain or exact (on the grid): the six signs are the values' own
   const bool exact = (ps.open == 0u) | (g.state == 1);
-  int known[6], i1, i2;
+  int known[6];
   if (exact) {
-    const Long2 i = value_sign_indices(ps.s1, ps.s2);
-    i1 = static_cast<int>(i[0]), i2 = static_cast<int>(i[1]);
+    value_signs(ps.s1, ps.s2, known);
   } else {
-    if (Relation rel; signs_off_grid<kRelation>(c, ps, zero1, g, known, rel)) {
-      if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
-      return answer_with(rel);
-    }
-    i1 = sign_index(known), i2 = sign_index(known + 3);
+    // off the grid: six points on one axis-parallel plane prove T1's zeros without arithmetic
+    // (their values are computed zeros); a value within the bound against a triangle in an
+    // axis-parallel plane by comparisons and one o2; else its exact sign one by one
+    if (zero1 && flat_pair(c))
+      known[0] = known[1] = known[2] = 0;
+    else if (!((ps.open & 7u) != 0u && axis_plane_signs(c + 9, c, known)))
+      // t: π2's own bound for a small T2 (algorithms/exact/README.md, "A plane's own bound")
+      for (const double t = plane_bound(c + 9, ps.box, b, ps.open, 007u); const int k : {0, 1, 2})
+        known[k] = sign_o3(ps.s1[k], t, g, 3, 4, 5, k);
   }
-  // both triangles proper, the planes distinct: neither triple all zero (index 13); one-sided
-  // triples are all negative (0) or all positive (26)
-  if ((i1 != 13) & (i2 != 13)) {
-    const bool one1 = (i1 == 0) | (i1 == 26), one2 = (i2 == 0) | (i2 == 26);
+  // T1 in π2 (all three exact signs zero): coplanar when both are proper, decided in 2-D
+  // (coplanar.hpp); degenerate input goes on to the classification (exact: zero1 failed, a sign not)
+  const bool any1 = exact || (known[0] | known[1] | known[2]) != 0;
+  if (Relation rel; !any1 && coplanar_known<kRelation>(c, g, rel)) {
+    if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
+    return answer_with(rel);
+  }
+  // T1 in π2 (all zero): T2 degenerate, or T1 ⊂ π2 and then, both proper, π1 = π2 and T2 ⊂ π1;
+  // the classification reads s2 only when both are proper, so zeros are its exact signs
+  if (!any1)
+    known[3] = known[4] = known[5] = 0;
+  else if (!exact && !((ps.open & 070u) != 0u && axis_plane_signs(c, c + 9, known + 3)))
+    for (const double t = plane_bound(c, ps.box, b, ps.open, 070u); const int k : {0, 1, 2})
+      known[3 + k] = sign_o3(ps.s2[k], t, g, 0, 1, 2, 3 + k);
+  const bool any2 = (known[3] | known[4] | known[5]) != 0;
+  if (any1 & any2) {  // both triangles proper, the planes distinct
+    const bool one1 = one_sided(known), one2 = one_sided(known + 3);
     if (!(one1 | one2) || !kRelation || !(one1 & one2)) {
       if (route) *route = g.state == 1 ? Route::grid : Route::filtered;
       if (one1 | one2) return answer_with(Relation::disjoint);  // parallel planes: both one-sided
-      return answer_with(crossing_known<kRelation>(c, i1, i2, ps.bound, g));
+      return answer_with(crossing_known<kRelation>(c, known, known + 3, b, g));
     }
   }
-  if (exact) signs_of_index(i1, known), signs_of_index(i2, known + 3);
   Tri t1, t2;
   double unused[18];
   gather(pair, t1, t2, unused);
@@ -349,38 +364,6 @@ template <bool kRelation>
   }
   if (route) *route = Route::filtered;
   return classify<Filtered, kRelation>(t1, t2, known);
-}
-
-// `open` masks that may take finish's front: a value within the bound and no candidate for a
-// shared vertex (shared_candidates 0), one look-up.
-inline constexpr auto kFront = [] {
-  std::array<bool, 64> t{};
-  for (unsigned open = 1; open < 64; ++open) t[open] = kCandidates[open] == 0u;
-  return t;
-}();
-
-// `finish_any` with its most common route at the overlap level in front, which saves no registers
-// (it calls nothing but finish_any, last): no candidate for a shared vertex, T1's values not all
-// zero, a value within the bound, the pair on the grid and neither triple all zero. On the grid
-// every value the filter computed and G1, G2 are exact, so the signs are the values' own and the
-// pair meets exactly when neither G1 nor G2 is positive (algorithms/exact/README.md, "Crossing
-// planes from exact signs: one table row, G1 and G2 in two lanes", "The common route in front").
-template <bool kRelation>
-[[gnu::always_inline]] inline RelationAnswer finish(const TrianglePair& pair, const PairSigns& ps, bool grid, Route* route) {
-  if (kRelation || grid || !kFront[ps.open & 63u] || all_zero3(ps.s1))
-    return finish_any<kRelation>(pair, ps, grid, route, -1, 0u);
-  const double* c = pair.t1[0].data();
-  double mag[3];
-  box_magnitudes(ps.box, mag);
-  unsigned points;  // a pass proves the coordinates finite (finite_after_filter not needed)
-  if (!on_grid(c, mag, points)) return finish_any<kRelation>(pair, ps, grid, route, 0, points);
-  const Long2 i = value_sign_indices(ps.s1, ps.s2);
-  const int i1 = static_cast<int>(i[0]), i2 = static_cast<int>(i[1]);
-  if ((i1 == 13) | (i2 == 13)) return finish_any<kRelation>(pair, ps, grid, route, 1, 0u);
-  if (route) *route = Route::grid;
-  if ((i1 == 0) | (i1 == 26) | (i2 == 0) | (i2 == 26)) return answer_with(Relation::disjoint);  // one-sided
-  const Double2 gg = gd_lanes(c, kCanon[27 * i1 + i2].data());
-  return answer_with(dmax(gg[0], gg[1]) > 0.0 ? Relation::disjoint : Relation::cross);
 }
 
 // One pair: the filter, then `finish`.
