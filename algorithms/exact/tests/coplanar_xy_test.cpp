@@ -5,6 +5,7 @@
 // off the 3-D grid, touching or not, in planes whose (x, y) projection is on the 2-D grid, off
 // it, or degenerate.
 #include "algorithms/exact/exact.hpp"
+#include "algorithms/exact/tests/pair_checks.hpp"
 #include "cases/generator/exact_pairs.hpp"
 #include "cases/oracle/oracle.hpp"
 
@@ -17,27 +18,11 @@
 
 using namespace tritri;
 using namespace exact_pairs;
+using namespace tritri::exact_checks;
 namespace ex = tritri::exact;
 namespace d = tritri::exact::detail;
 
 namespace {
-
-// The 2-D grid on the pair's (x, y) coordinates, from its definition: m = max |coordinate| in
-// [2^-500, 2^500), q = floor(log2 m) - 24, every coordinate an integer multiple of 2^q.
-bool grid2_reference(const TrianglePair& p) {
-  double m = 0.0;
-  for (const Triangle* t : {&p.t1, &p.t2})
-    for (const auto& v : t->v) m = std::max({m, std::fabs(v[0]), std::fabs(v[1])});
-  if (!(m >= 0x1p-500 && m < 0x1p500)) return false;
-  const int q = std::ilogb(m) - 24;
-  for (const Triangle* t : {&p.t1, &p.t2})
-    for (const auto& v : t->v)
-      for (int k = 0; k < 2; ++k) {
-        const double units = std::ldexp(v[k], -q);
-        if (units != std::trunc(units)) return false;
-      }
-  return true;
-}
 
 // One coordinate at scale 2^e: an integer of up to `bits` bits, a tie with another coordinate, a
 // signed zero, or an integer above 2^40 (a huge axis whose units the other axis must not set).
@@ -78,23 +63,6 @@ TrianglePair coplanar_off_grid(GenRng& r, int kind) {
   const int ca = r.integer(-2, 2), cb = r.integer(-2, 2);
   auto put = [&](const std::array<double, 2>& w) { return in_plane(kind, w[0], w[1], ca, cb); };
   return {Triangle{{put(a), put(b), put(c)}}, Triangle{{put(p), put(q), put(s)}}};
-}
-
-void expect_oracle(const std::vector<TrianglePair>& pairs, const char* what) {
-  std::vector<Overlap> ov(pairs.size());
-  std::vector<RelationAnswer> rel(pairs.size());
-  ex::overlap_batch(pairs.data(), pairs.size(), ov.data());
-  ex::relation_batch(pairs.data(), pairs.size(), rel.data());
-  for (std::size_t n = 0; n < pairs.size(); ++n) {
-    const OracleRecord o = oracle_label(pairs[n]);
-    const RelationAnswer a = ex::relation(pairs[n]);
-    ASSERT_EQ(a.relation, o.relation) << what << " #" << n << ": " << to_string(a.relation) << " vs "
-                                      << to_string(o.relation);
-    ASSERT_EQ(a.dimension, o.dimension) << what << " #" << n;
-    ASSERT_EQ(ex::overlap(pairs[n]) == Overlap::yes, o.overlap) << what << " #" << n;
-    ASSERT_EQ(ov[n] == Overlap::yes, o.overlap) << what << " batch #" << n;
-    ASSERT_EQ(rel[n].relation, o.relation) << what << " batch #" << n;
-  }
 }
 
 }  // namespace

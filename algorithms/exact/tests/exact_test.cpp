@@ -4,6 +4,7 @@
 // classification against the oracle, and the built-in cases in all 72 orders.
 #include "algorithms/exact/exact.hpp"
 #include "algorithms/exact/tests/expansions.hpp"
+#include "algorithms/exact/tests/pair_checks.hpp"
 #include "cases/generator/exact_pairs.hpp"
 #include "cases/casefile.hpp"
 #include "cases/oracle/oracle.hpp"
@@ -809,14 +810,11 @@ TEST(OnePair, NonFiniteInputIsDeclinedAfterTheFilter) {
 // the route for six points in one plane z = h decides them before the shared-vertex scan
 // (one_pair.hpp `finish_pair`), and counts them as `grid`.
 std::size_t flat_z_proper(const std::vector<TrianglePair>& pairs) {
-  const auto area = [](const Triangle& t) {
-    return (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
-  };
   std::size_t n = 0;
   for (const TrianglePair& p : pairs) {
     bool flat = true;
     for (int k = 0; k < 3; ++k) flat &= p.t1[k][2] == p.t1[0][2] && p.t2[k][2] == p.t1[0][2];
-    n += flat && area(p.t1) != 0.0 && area(p.t2) != 0.0;
+    n += flat && exact_checks::proper_in_xy(p.t1) && exact_checks::proper_in_xy(p.t2);
   }
   return n;
 }
@@ -1107,10 +1105,7 @@ ex::Stats run_overlap(ex::Isa isa, const std::vector<TrianglePair>& pairs) {
 // How many of the pairs have their triangles' boxes apart (pass 1's box exit takes them).
 std::size_t boxes_apart(const std::vector<TrianglePair>& pairs) {
   std::size_t n = 0;
-  for (const TrianglePair& p : pairs) {
-    const double* c = reinterpret_cast<const double*>(&p);
-    n += ex::detail::boxes_apart(ex::detail::box_of(c), ex::detail::box_of(c + 9)) ? 1u : 0u;
-  }
+  for (const TrianglePair& p : pairs) n += exact_checks::boxes_apart(p) ? 1u : 0u;
   return n;
 }
 }  // namespace

@@ -3,6 +3,7 @@
 // z = h: (x, y) before the 3-D grid test"): which pairs it takes, and their answers against the
 // oracle at both levels, one pair per call and in batches.
 #include "algorithms/exact/exact.hpp"
+#include "algorithms/exact/tests/pair_checks.hpp"
 #include "cases/generator/exact_pairs.hpp"
 #include "cases/oracle/oracle.hpp"
 
@@ -13,6 +14,7 @@
 
 using namespace tritri;
 using namespace exact_pairs;
+using namespace tritri::exact_checks;
 namespace ex = tritri::exact;
 
 namespace {
@@ -46,36 +48,6 @@ TrianglePair flat_z_pair(GenRng& r) {
   return p;
 }
 
-bool proper_in_xy(const Triangle& t) {
-  return (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]) != 0.0;
-}
-
-// The 2-D grid of the pair's (x, y) by its definition (m = the largest |x|, |y|, 25 bits below it).
-bool on_grid2(const TrianglePair& p) {
-  double m = 0.0;
-  for (const Triangle* t : {&p.t1, &p.t2})
-    for (const auto& v : t->v) m = std::fmax(m, std::fmax(std::fabs(v[0]), std::fabs(v[1])));
-  if (!(m >= 0x1p-500 && m < 0x1p500)) return false;
-  const int q = std::ilogb(m) - 24;
-  for (const Triangle* t : {&p.t1, &p.t2})
-    for (const auto& v : t->v)
-      for (int k = 0; k < 2; ++k)
-        if (std::ldexp(v[k], -q) != std::trunc(std::ldexp(v[k], -q))) return false;
-  return true;
-}
-
-bool boxes_apart(const TrianglePair& p) {
-  for (int k = 0; k < 3; ++k) {
-    double lo1 = p.t1[0][k], hi1 = lo1, lo2 = p.t2[0][k], hi2 = lo2;
-    for (int v = 1; v < 3; ++v) {
-      lo1 = std::fmin(lo1, p.t1[v][k]), hi1 = std::fmax(hi1, p.t1[v][k]);
-      lo2 = std::fmin(lo2, p.t2[v][k]), hi2 = std::fmax(hi2, p.t2[v][k]);
-    }
-    if (hi1 < lo2 || hi2 < lo1) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 // Pairs in a plane z = h off the 3-D grid, both argument orders: every answer the oracle's (both
@@ -96,26 +68,14 @@ TEST(FlatZ, PairsInAPlaneZTakeTheRouteAndAgreeWithTheOracle) {
   for (const TrianglePair& v : every_order(flat_pair_one_unit_apart(2))) pairs.push_back(v);
   std::size_t route = 0;
   for (const TrianglePair& p : pairs)
-    route += on_grid2(p) && proper_in_xy(p.t1) && proper_in_xy(p.t2) && !boxes_apart(p);
+    route += grid2_reference(p) && proper_in_xy(p.t1) && proper_in_xy(p.t2) && !boxes_apart(p);
   std::vector<Overlap> out(pairs.size());
   ex::reset_stats();
   ex::overlap_batch_with(ex::Isa::scalar, pairs.data(), pairs.size(), out.data());
   EXPECT_EQ(ex::stats().grid, route);
   EXPECT_GT(route, pairs.size() / 2);
-  std::vector<Overlap> batch(pairs.size());
-  std::vector<RelationAnswer> rel(pairs.size());
-  ex::overlap_batch(pairs.data(), pairs.size(), batch.data());
-  ex::relation_batch(pairs.data(), pairs.size(), rel.data());
-  for (std::size_t n = 0; n < pairs.size(); ++n) {
-    const OracleRecord o = oracle_label(pairs[n]);
-    const RelationAnswer a = ex::relation(pairs[n]);
-    ASSERT_EQ(a.relation, o.relation) << n << ": " << to_string(a.relation) << " vs " << to_string(o.relation);
-    ASSERT_EQ(a.dimension, o.dimension) << n;
-    ASSERT_EQ(ex::overlap(pairs[n]) == Overlap::yes, o.overlap) << n;
-    ASSERT_EQ(out[n] == Overlap::yes, o.overlap) << "scalar pass " << n;
-    ASSERT_EQ(batch[n] == Overlap::yes, o.overlap) << "batch " << n;
-    ASSERT_EQ(rel[n].relation, o.relation) << "batch " << n;
-  }
+  for (std::size_t n = 0; n < pairs.size(); ++n) ASSERT_EQ(out[n] == Overlap::yes, oracle_label(pairs[n]).overlap) << n;
+  expect_oracle(pairs, "z = h");
 }
 
 // A non-finite coordinate in a pair in a plane z = h: a NaN z leaves the box's z extent zero (the
