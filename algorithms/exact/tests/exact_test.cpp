@@ -1442,6 +1442,48 @@ TEST(CoplanarPass2, TheTwoDimensionalGridIsExactAndTaken) {
   expect_all_paths_agree(edge, "one unit outside at 26 bits");
 }
 
+// Flat lanes on the 3-D grid (kernel_pass2.inc's block2): a block of flat lanes skips the 3-D
+// grid test and takes them on the 2-D grid (README "Flat lanes need no 3-D grid test"); a block
+// with a lane that is not flat runs it (its crossing lanes need it). Every pair with both
+// triangles proper is decided in lanes either way, on every ISA, the flat ones touching (a
+// vertex on T1's edge: exact zeros, so only the exact threshold decides them).
+TEST(CoplanarPass2, FlatLanesNeedNoThreeDGridTest) {
+  GenRng r(35);
+  const auto on_edge = [](TrianglePair p) {
+    p.t2[0] = (p.t1[0] + p.t1[1]) * 0.5;
+    return p;
+  };
+  const auto flat_pair = [&](int k) {
+    TrianglePair p = small_int_pair(r, 6);
+    for (Triangle* t : {&p.t1, &p.t2})
+      for (auto& v : t->v) v[k] = 3;
+    return on_edge(p);
+  };
+  std::vector<TrianglePair> flat, mixed;
+  for (int i = 0; i < 2048; ++i) {
+    flat.push_back(flat_pair(i % 3));
+    mixed.push_back(i % 3 == 1 ? on_edge(small_int_pair(r, 6)) : flat_pair(i % 3));
+  }
+  const auto degenerate = [](const std::vector<TrianglePair>& pairs) {
+    std::size_t n = 0;
+    for (const TrianglePair& p : pairs)
+      for (const Triangle* t : {&p.t1, &p.t2})
+        if ((t->v[1] - t->v[0]).cross(t->v[2] - t->v[0]) == V(0, 0, 0)) {
+          ++n;
+          break;
+        }
+    return n;
+  };
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    SCOPED_TRACE(ex::to_string(isa));
+    EXPECT_LE(run_overlap(isa, flat).scalar, degenerate(flat)) << "flat blocks";
+    EXPECT_LE(run_overlap(isa, mixed).scalar, degenerate(mixed)) << "flat and crossing lanes in a block";
+  }
+  expect_all_paths_agree(flat, "flat on the 3-D grid");
+  expect_all_paths_agree(mixed, "flat and crossing on the 3-D grid");
+}
+
 namespace {
 
 // The pair with its axes rotated: coordinate k moved to (k + shift) mod 3 (relations unchanged).
