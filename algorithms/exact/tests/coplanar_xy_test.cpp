@@ -104,7 +104,7 @@ TEST(CoplanarXy, PairsOffTheThreeDGridAgreeWithTheOracle) {
     for (int n = 0; n < 400; ++n) pairs.push_back(coplanar_off_grid(r, kind));
     for (int n = 0; n < 8; ++n)
       for (const auto& v : every_order(coplanar_off_grid(r, kind))) pairs.push_back(v);
-    expect_oracle(pairs, kind == 0 ? "flat" : kind == 1 ? "near z" : "y = x");
+    expect_oracle(pairs, kind == 0 ? "flat" : kind == 1 ? "near z" : "y = x", oracle_label);
   }
   std::vector<TrianglePair> edge;
   for (int k = 0; k < 3; ++k) {
@@ -112,7 +112,7 @@ TEST(CoplanarXy, PairsOffTheThreeDGridAgreeWithTheOracle) {
     ASSERT_FALSE(oracle_label(t).overlap);
     for (const auto& v : every_order(t)) edge.push_back(v);
   }
-  expect_oracle(edge, "one unit outside at 26 bits");
+  expect_oracle(edge, "one unit outside at 26 bits", oracle_label);
 }
 
 // The projection by loads (projected.hpp's project_of) holds, for every axis k dropped, the same
@@ -195,7 +195,7 @@ TEST(CoplanarGrid, ZerosOnTheGridAgreeWithTheOracle) {
   std::vector<TrianglePair> all;
   for (const TrianglePair& p : pairs)
     for (const auto& v : every_order(p)) all.push_back(v);
-  expect_oracle(all, "zeros on the grid");
+  expect_oracle(all, "zeros on the grid", oracle_label);
   std::vector<Overlap> ov(all.size());
   ex::overlap_batch_with(ex::Isa::scalar, all.data(), all.size(), ov.data());
   for (std::size_t n = 0; n < all.size(); ++n) ASSERT_EQ(ov[n] == Overlap::yes, oracle_label(all[n]).overlap) << "scalar #" << n;

@@ -75,7 +75,7 @@ TEST(FlatZ, PairsInAPlaneZTakeTheRouteAndAgreeWithTheOracle) {
   EXPECT_EQ(ex::stats().grid, route);
   EXPECT_GT(route, pairs.size() / 2);
   for (std::size_t n = 0; n < pairs.size(); ++n) ASSERT_EQ(out[n] == Overlap::yes, oracle_label(pairs[n]).overlap) << n;
-  expect_oracle(pairs, "z = h");
+  expect_oracle(pairs, "z = h", oracle_label);
 }
 
 // A non-finite coordinate in a pair in a plane z = h: a NaN z leaves the box's z extent zero (the

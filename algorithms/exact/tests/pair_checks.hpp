@@ -1,9 +1,9 @@
 // Checks on triangle pairs shared by exact's unit tests: the 2-D grid by its definition, boxes
-// apart, a triangle proper in (x, y), and every answer against the oracle.
+// apart, a triangle proper in (x, y), and every answer against a judge (the tests pass the
+// oracle's labelling, from the cases layer: this header stays on the algorithms layer).
 #pragma once
 
 #include "algorithms/exact/exact.hpp"
-#include "cases/oracle/oracle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,14 +41,16 @@ inline bool proper_in_xy(const Triangle& t) {
   return (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]) != 0.0;
 }
 
-// Every answer the oracle's: both levels, one pair per call and in batches.
-inline void expect_oracle(const std::vector<TrianglePair>& pairs, const char* what) {
+// Every answer the judge's (`label(pair)`: a record with relation, dimension and overlap, as the
+// oracle's): both levels, one pair per call and in batches.
+template <class Label>
+void expect_oracle(const std::vector<TrianglePair>& pairs, const char* what, Label label) {
   std::vector<Overlap> ov(pairs.size());
   std::vector<RelationAnswer> rel(pairs.size());
   exact::overlap_batch(pairs.data(), pairs.size(), ov.data());
   exact::relation_batch(pairs.data(), pairs.size(), rel.data());
   for (std::size_t n = 0; n < pairs.size(); ++n) {
-    const OracleRecord o = oracle_label(pairs[n]);
+    const auto o = label(pairs[n]);
     const RelationAnswer a = exact::relation(pairs[n]);
     ASSERT_EQ(a.relation, o.relation) << what << " #" << n << ": " << to_string(a.relation) << " vs "
                                       << to_string(o.relation);
