@@ -1971,7 +1971,9 @@ TEST(GridPoints, OwnPointsOnTheGridMakeTheValueExact) {
     const bool grid = d::on_grid(c, mag, points);
     const unsigned ref = points_reference(c);
     ASSERT_EQ(grid, ref == 63u) << n;
-    if (!grid) ASSERT_EQ(points, __builtin_popcount(ref) >= 4 ? ref : 0u) << n;
+    if (!grid) {
+      ASSERT_EQ(points, __builtin_popcount(ref) >= 4 ? ref : 0u) << n;
+    }
     const auto check = [&](double v, int a, int b, int cc, int x) {
       const Q exact = det3_exact(c + 3 * a, c + 3 * b, c + 3 * a, c + 3 * cc, c + 3 * a, c + 3 * x);
       const unsigned bits = 1u << a | 1u << b | 1u << cc | 1u << x;
