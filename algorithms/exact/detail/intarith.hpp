@@ -9,7 +9,8 @@
 //              integer for every value; i.e. a bit span of at most 61): differences fit int64
 //              (< 2^62), the cross-product components (< 2^125) fit __int128, and the dot
 //              product (< 2^189) is accumulated in 192-bit two's complement.
-//   middle     every span <= 125: the same in fixed 2/4/6-limb two's complement integers.
+//   middle     every span <= 125: differences below 2^126 in __int128, products in 128-bit halves
+//              (256 bits), the dot product in three (384).
 //   wide path  any span: sign-magnitude multi-limb integers (64-bit limbs, schoolbook
 //              products) in fixed stack buffers; spans up to the whole double range (2098
 //              bits -> 33 limbs per coordinate, 100 per triple product).
@@ -18,6 +19,7 @@
 // rows given by the same pair of points.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -128,13 +130,20 @@ inline bool axis_to_int61_with_max(const double* const* v, int n, double m, std:
   const std::uint64_t scale_bits = static_cast<std::uint64_t>(61 - (e - 1022) + 1023) << 52;
   double scale;
   std::memcpy(&scale, &scale_bits, sizeof scale);
-  bool ok = true;
+  // s = x·scale is exact unless it underflows, and |s| < 2^61: it is an integer exactly when
+  // truncating it to int64 and back gives s. The misses |double(X) - s| are summed: none is
+  // negative and a non-zero difference of doubles is never 0, so the sum is 0 exactly when
+  // every s is an integer (no branch per value). With scale >= 1 nothing underflows; below it a
+  // non-zero x whose s underflowed to 0 is refused as well.
+  double miss = 0.0;
   for (int i = 0; i < n; ++i) {
-    const double s = *v[i] * scale;  // exact unless it underflows (then |s| < 1: no integer)
+    const double s = *v[i] * scale;
     x[i] = static_cast<std::int64_t>(s);
-    ok &= static_cast<double>(x[i]) == s && (s != 0.0 || *v[i] == 0.0);
+    miss += std::fabs(static_cast<double>(x[i]) - s);
   }
-  return ok;
+  if (scale < 1.0)
+    for (int i = 0; i < n; ++i) miss += static_cast<double>((x[i] == 0) & (*v[i] != 0.0));
+  return miss == 0.0;
 }
 
 inline bool axis_to_int61(const double* const* v, int n, std::int64_t* x) {
@@ -148,85 +157,65 @@ inline bool axis_to_int61(const double* const* v, int n, std::int64_t* x) {
 
 // ---------------------------------------------------------------- middle path: fixed limbs
 
-// Two's complement integers of N 64-bit limbs (little-endian), fixed size: the loops unroll.
-template <int N>
-struct Fixed {
-  std::uint64_t w[N];
+// Two's complement integers in 128-bit halves: the compiler's add/adc and mul pairs, no limb loops
+// (algorithms/exact/README.md, "The middle path in 128-bit halves").
+struct I256 {  // hi·2^128 + lo
+  u128 lo;
+  i128 hi;
+};
+struct I384 {  // w2·2^256 + w1·2^128 + w0
+  u128 w0, w1;
+  i128 w2;
 };
 
-template <int N>
-inline Fixed<N> fixed_sub(const Fixed<N>& a, const Fixed<N>& b) {
-  Fixed<N> r;
-  std::uint64_t borrow = 0;
-  for (int i = 0; i < N; ++i) {
-    const u128 t = static_cast<u128>(a.w[i]) - b.w[i] - borrow;
-    r.w[i] = static_cast<std::uint64_t>(t);
-    borrow = static_cast<std::uint64_t>(t >> 64) & 1u;
-  }
+// a·b exactly, for any a and |b| < 2^126. With a = ah·2^64 + al (ah signed, al unsigned) and b
+// likewise: a·b = ah·bh·2^128 + (ah·bl + bh·al)·2^64 + al·bl, where |ah·bl| <= 2^63·(2^64 - 1) and
+// |bh·al| < 2^126 fit __int128; the middle terms' low words and al·bl's high word sum below 3·2^64.
+inline I256 mul_wide(i128 a, i128 b) {
+  const std::uint64_t al = static_cast<std::uint64_t>(a), bl = static_cast<std::uint64_t>(b);
+  const std::int64_t ah = static_cast<std::int64_t>(a >> 64), bh = static_cast<std::int64_t>(b >> 64);
+  const u128 t0 = static_cast<u128>(al) * bl;
+  const i128 t1 = static_cast<i128>(ah) * static_cast<i128>(bl), t2 = static_cast<i128>(bh) * static_cast<i128>(al);
+  const u128 mid = (t0 >> 64) + static_cast<std::uint64_t>(t1) + static_cast<std::uint64_t>(t2);
+  I256 r;
+  r.lo = static_cast<u128>(static_cast<std::uint64_t>(t0)) | (mid << 64);
+  r.hi = static_cast<i128>(ah) * bh + (t1 >> 64) + (t2 >> 64) + static_cast<i128>(mid >> 64);
   return r;
 }
 
-template <int N>
-inline Fixed<N> fixed_add(const Fixed<N>& a, const Fixed<N>& b) {
-  Fixed<N> r;
-  std::uint64_t carry = 0;
-  for (int i = 0; i < N; ++i) {
-    const u128 t = static_cast<u128>(a.w[i]) + b.w[i] + carry;
-    r.w[i] = static_cast<std::uint64_t>(t);
-    carry = static_cast<std::uint64_t>(t >> 64);
-  }
-  return r;
+inline I256 sub256(const I256& a, const I256& b) {
+  return {a.lo - b.lo, a.hi - b.hi - static_cast<i128>(a.lo < b.lo)};
 }
 
-// a·b exactly, two's complement: the unsigned product of the representations, minus b·2^(64N)
-// when a < 0 and minus a·2^(64M) when b < 0 (mod 2^(64(N+M))). No branch on the signs.
-template <int N, int M>
-inline Fixed<N + M> fixed_mul(const Fixed<N>& a, const Fixed<M>& b) {
-  Fixed<N + M> r;
-  for (int i = 0; i < N + M; ++i) r.w[i] = 0;
-  for (int i = 0; i < N; ++i) {
-    std::uint64_t carry = 0;
-    for (int j = 0; j < M; ++j) {
-      const u128 t = static_cast<u128>(a.w[i]) * b.w[j] + r.w[i + j] + carry;
-      r.w[i + j] = static_cast<std::uint64_t>(t);
-      carry = static_cast<std::uint64_t>(t >> 64);
-    }
-    r.w[i + M] = carry;
-  }
-  const std::uint64_t ma = 0 - (a.w[N - 1] >> 63), mb = 0 - (b.w[M - 1] >> 63);
-  std::uint64_t borrow = 0;
-  for (int j = 0; j < M; ++j) {  // r -= (b & ma) << 64N
-    const u128 t = static_cast<u128>(r.w[N + j]) - (b.w[j] & ma) - borrow;
-    r.w[N + j] = static_cast<std::uint64_t>(t);
-    borrow = static_cast<std::uint64_t>(t >> 64) & 1u;
-  }
-  borrow = 0;
-  for (int i = 0; i < N; ++i) {  // r -= (a & mb) << 64M
-    const u128 t = static_cast<u128>(r.w[M + i]) - (a.w[i] & mb) - borrow;
-    r.w[M + i] = static_cast<std::uint64_t>(t);
-    borrow = static_cast<std::uint64_t>(t >> 64) & 1u;
-  }
-  return r;
+inline int sign256(const I256& a) { return a.hi < 0 ? -1 : ((a.hi != 0) | (a.lo != 0)); }
+
+// acc += v·2^128 (v signed: its sign extended into w2).
+inline void add_at128(I384& acc, i128 v) {
+  const u128 w1 = acc.w1 + static_cast<u128>(v);
+  acc.w2 += static_cast<i128>(w1 < acc.w1) - static_cast<i128>(v < 0);
+  acc.w1 = w1;
 }
 
-template <int N>
-inline int fixed_sign(const Fixed<N>& a) {
-  if (a.w[N - 1] >> 63) return -1;
-  std::uint64_t any = 0;
-  for (int i = 0; i < N; ++i) any |= a.w[i];
-  return any != 0;
+// acc += m·d for |m| < 2^254 and |d| < 2^126: m·d = m.hi·d·2^128 + m.lo·d, and m.lo (unsigned) is
+// the signed lo + 2^128 where its top bit is set, so m.lo·d = mul_wide(lo, d) + [top bit]·d·2^128.
+inline void add_product(I384& acc, const I256& m, i128 d) {
+  const I256 low = mul_wide(static_cast<i128>(m.lo), d), high = mul_wide(m.hi, d);
+  const u128 w0 = acc.w0 + low.lo;
+  add_at128(acc, low.hi);
+  add_at128(acc, static_cast<i128>(w0 < acc.w0));  // the carry out of w0
+  acc.w0 = w0;
+  add_at128(acc, static_cast<i128>(m.lo >> 127) * d);
+  const u128 w1 = acc.w1 + high.lo;
+  acc.w2 += high.hi + static_cast<i128>(w1 < acc.w1);
+  acc.w1 = w1;
 }
 
-// x·2^-q as a 2-limb two's complement integer (x a multiple of 2^q, |x| < 2^(q+125)).
-inline Fixed<2> fixed2_from(const Split& s, int q) {
-  Fixed<2> r{{0, 0}};
-  if (s.mant == 0) return r;
-  const int shift = s.exp - q;  // 0..124
-  const u128 v = static_cast<u128>(s.mant) << shift;
-  r.w[0] = static_cast<std::uint64_t>(v);
-  r.w[1] = static_cast<std::uint64_t>(v >> 64);
-  if (s.neg) r = fixed_sub(Fixed<2>{{0, 0}}, r);
-  return r;
+inline int sign384(const I384& a) { return a.w2 < 0 ? -1 : ((a.w2 != 0) | (a.w1 != 0) | (a.w0 != 0)); }
+
+// x·2^-q (x a multiple of 2^q, |x| < 2^(q+125)).
+inline i128 int128_from(const Split& s, int q) {
+  const i128 v = s.mant == 0 ? 0 : static_cast<i128>(static_cast<u128>(s.mant) << (s.exp - q));
+  return s.neg ? -v : v;
 }
 
 // ---------------------------------------------------------------- wide path

@@ -195,20 +195,19 @@ inline int det2_pair_sign(const PairInt61& p, int i, int j, int a, int b, int v)
   return (m > 0) - (m < 0);
 }
 
-// The middle path: |X| < 2^125, differences < 2^126 (2 limbs), cross terms < 2^253 (4 limbs),
-// the dot product < 2^381 (6 limbs). s: the six points split, q: each axis's lowest exponent.
+// The middle path: |X| < 2^125, differences < 2^126 (__int128), cross terms < 2^253 (I256), the
+// dot product < 2^381 (I384). s: the six points split, q: each axis's lowest exponent.
 inline int det3_middle(const Split (&s)[6][3], const int (&q)[3]) {
   ++counts().middle3;
-  Fixed<2> d[3][3];
+  i128 d[3][3];
   for (int r = 0; r < 3; ++r)
-    for (int k = 0; k < 3; ++k) d[r][k] = fixed_sub(fixed2_from(s[2 * r + 1][k], q[k]), fixed2_from(s[2 * r][k], q[k]));
-  Fixed<6> acc{{0, 0, 0, 0, 0, 0}};
+    for (int k = 0; k < 3; ++k) d[r][k] = int128_from(s[2 * r + 1][k], q[k]) - int128_from(s[2 * r][k], q[k]);
+  I384 acc{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const Fixed<4> m = fixed_sub(fixed_mul(d[1][i], d[2][j]), fixed_mul(d[1][j], d[2][i]));
-    acc = fixed_add(acc, fixed_mul(m, d[0][k]));
+    add_product(acc, sub256(mul_wide(d[1][i], d[2][j]), mul_wide(d[1][j], d[2][i])), d[0][k]);
   }
-  return fixed_sign(acc);
+  return sign384(acc);
 }
 
 // The wide path: any finite doubles, in Big.
@@ -280,11 +279,11 @@ inline int det2_sign(const double* a, const double* b, const double* c, int i, i
   }
   if (top[0] - q[0] <= 125 && top[1] - q[1] <= 125) {
     ++counts().middle2;
-    const Fixed<2> bi = fixed_sub(fixed2_from(s[1][0], q[0]), fixed2_from(s[0][0], q[0]));
-    const Fixed<2> bj = fixed_sub(fixed2_from(s[1][1], q[1]), fixed2_from(s[0][1], q[1]));
-    const Fixed<2> ci = fixed_sub(fixed2_from(s[2][0], q[0]), fixed2_from(s[0][0], q[0]));
-    const Fixed<2> cj = fixed_sub(fixed2_from(s[2][1], q[1]), fixed2_from(s[0][1], q[1]));
-    return fixed_sign(fixed_sub(fixed_mul(bi, cj), fixed_mul(bj, ci)));
+    const i128 bi = int128_from(s[1][0], q[0]) - int128_from(s[0][0], q[0]);
+    const i128 bj = int128_from(s[1][1], q[1]) - int128_from(s[0][1], q[1]);
+    const i128 ci = int128_from(s[2][0], q[0]) - int128_from(s[0][0], q[0]);
+    const i128 cj = int128_from(s[2][1], q[1]) - int128_from(s[0][1], q[1]);
+    return sign256(sub256(mul_wide(bi, cj), mul_wide(bj, ci)));
   }
   ++counts().wide2;
   Big bi, bj, ci, cj, x, y, p1, p2, r;

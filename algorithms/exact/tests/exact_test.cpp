@@ -458,6 +458,90 @@ TEST(Engines, ExtremeValues) {
   }
 }
 
+namespace {
+
+namespace ie = ex::intexact;
+
+// v as an mpz: the signed high word times 2^64 plus the unsigned low word.
+void mpz_of(mpz_t z, ie::i128 v) {
+  mpz_set_si(z, static_cast<long>(static_cast<std::int64_t>(v >> 64)));
+  mpz_mul_2exp(z, z, 64);
+  mpz_add_ui(z, z, static_cast<unsigned long>(static_cast<std::uint64_t>(v)));
+}
+void mpz_of(mpz_t z, ie::u128 v) {
+  mpz_set_ui(z, static_cast<unsigned long>(static_cast<std::uint64_t>(v >> 64)));
+  mpz_mul_2exp(z, z, 64);
+  mpz_add_ui(z, z, static_cast<unsigned long>(static_cast<std::uint64_t>(v)));
+}
+// hi·2^128 + lo, and w2·2^256 + w1·2^128 + w0
+void mpz_of(mpz_t z, const ie::I256& v) {
+  mpz_t t;
+  mpz_init(t);
+  mpz_of(z, v.hi);
+  mpz_mul_2exp(z, z, 128);
+  mpz_of(t, v.lo);
+  mpz_add(z, z, t);
+  mpz_clear(t);
+}
+void mpz_of(mpz_t z, const ie::I384& v) {
+  mpz_t t;
+  mpz_init(t);
+  mpz_of(z, v.w2);
+  mpz_mul_2exp(z, z, 128);
+  mpz_of(t, v.w1);
+  mpz_add(z, z, t);
+  mpz_mul_2exp(z, z, 128);
+  mpz_of(t, v.w0);
+  mpz_add(z, z, t);
+  mpz_clear(t);
+}
+
+// A random value of at most `bits` bits in magnitude (1..127), often at an edge: zero, ±1, the
+// largest, a power of two, or a single high word.
+ie::i128 random_i128(GenRng& r, int bits) {
+  const ie::u128 top = (ie::u128{1} << bits) - 1;
+  ie::u128 m;
+  switch (r.integer(0, 5)) {
+    case 0: m = static_cast<ie::u128>(r.integer(0, 1)); break;
+    case 1: m = top; break;
+    case 2: m = ie::u128{1} << r.integer(0, bits - 1); break;
+    case 3: m = (static_cast<ie::u128>(r.next()) << 64) & top; break;
+    default: m = ((static_cast<ie::u128>(r.next()) << 64) | r.next()) & top; break;
+  }
+  return r.coin() ? -static_cast<ie::i128>(m) : static_cast<ie::i128>(m);
+}
+
+}  // namespace
+
+// The middle path's words (intarith.hpp, I256 and I384): each product and sum against GMP, on
+// random values and at the edges of their ranges (any a, |b| < 2^126 for mul_wide; |m| < 2^254
+// for add_product), and the signs.
+TEST(Engines, MiddlePathWordsAgreeWithGmp) {
+  GenRng r(31);
+  mpz_t want, got, x, y;
+  mpz_inits(want, got, x, y, nullptr);
+  for (int trial = 0; trial < 200000; ++trial) {
+    const ie::i128 a = trial % 7 == 0 ? std::numeric_limits<ie::i128>::min() : random_i128(r, 127);
+    const ie::i128 b = random_i128(r, 126);
+    const ie::I256 p = ie::mul_wide(a, b);
+    mpz_of(x, a), mpz_of(y, b), mpz_mul(want, x, y), mpz_of(got, p);
+    ASSERT_EQ(mpz_cmp(want, got), 0) << trial;
+    ASSERT_EQ(ie::sign256(p), mpz_sgn(want)) << trial;
+    // m = p - q with |m| < 2^254, then acc + m·d from an accumulator below 2^381
+    const ie::I256 m = ie::sub256(p, ie::mul_wide(random_i128(r, 127), random_i128(r, 126)));
+    ie::I384 acc{static_cast<ie::u128>(random_i128(r, 127)), static_cast<ie::u128>(random_i128(r, 127)),
+                 random_i128(r, 122)};
+    const ie::i128 d = random_i128(r, 126);
+    mpz_of(want, acc), mpz_of(x, m), mpz_of(y, d);
+    mpz_addmul(want, x, y);
+    ie::add_product(acc, m, d);
+    mpz_of(got, acc);
+    ASSERT_EQ(mpz_cmp(want, got), 0) << trial;
+    ASSERT_EQ(ie::sign384(acc), mpz_sgn(want)) << trial;
+  }
+  mpz_clears(want, got, x, y, nullptr);
+}
+
 // ---------------------------------------------------------------- zeros off the grid
 
 namespace {
