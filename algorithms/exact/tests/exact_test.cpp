@@ -473,28 +473,18 @@ void mpz_of(mpz_t z, ie::u128 v) {
   mpz_mul_2exp(z, z, 64);
   mpz_add_ui(z, z, static_cast<unsigned long>(static_cast<std::uint64_t>(v)));
 }
+// z·2^128 + low: the next 128-bit word appended below z.
+void mpz_append(mpz_t z, ie::u128 low) {
+  mpz_t t;
+  mpz_init(t);
+  mpz_of(t, low);
+  mpz_mul_2exp(z, z, 128);
+  mpz_add(z, z, t);
+  mpz_clear(t);
+}
 // hi·2^128 + lo, and w2·2^256 + w1·2^128 + w0
-void mpz_of(mpz_t z, const ie::I256& v) {
-  mpz_t t;
-  mpz_init(t);
-  mpz_of(z, v.hi);
-  mpz_mul_2exp(z, z, 128);
-  mpz_of(t, v.lo);
-  mpz_add(z, z, t);
-  mpz_clear(t);
-}
-void mpz_of(mpz_t z, const ie::I384& v) {
-  mpz_t t;
-  mpz_init(t);
-  mpz_of(z, v.w2);
-  mpz_mul_2exp(z, z, 128);
-  mpz_of(t, v.w1);
-  mpz_add(z, z, t);
-  mpz_mul_2exp(z, z, 128);
-  mpz_of(t, v.w0);
-  mpz_add(z, z, t);
-  mpz_clear(t);
-}
+void mpz_of(mpz_t z, const ie::I256& v) { mpz_of(z, v.hi), mpz_append(z, v.lo); }
+void mpz_of(mpz_t z, const ie::I384& v) { mpz_of(z, v.w2), mpz_append(z, v.w1), mpz_append(z, v.w0); }
 
 // A random value of at most `bits` bits in magnitude (1..127), often at an edge: zero, ±1, the
 // largest, a power of two, or a single high word.
