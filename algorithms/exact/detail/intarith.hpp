@@ -155,7 +155,7 @@ inline bool axis_to_int61(const double* const* v, int n, std::int64_t* x) {
   return axis_to_int61_with_max(v, n, m, x);
 }
 
-// ---------------------------------------------------------------- middle path: fixed limbs
+// ---------------------------------------------------------------- middle path: 128-bit halves
 
 // Two's complement integers in 128-bit halves: the compiler's add/adc and mul pairs, no limb loops
 // (algorithms/exact/README.md, "The middle path in 128-bit halves").
