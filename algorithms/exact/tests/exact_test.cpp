@@ -1883,6 +1883,72 @@ TEST(CrossingPass2, EverySignPatternOnTheGridIsTheOracles) {
   expect_all_paths_agree(pairs, "crossing planes on the grid");
 }
 
+// ---------------------------------------------------------------- pass 2 off the grid: own points
+
+namespace {
+// 2-D orientation of small integers (exact in double).
+double orient_xy(const Vec3<double>& a, const Vec3<double>& b, const Vec3<double>& c) {
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+}  // namespace
+
+// T1 and T2's edge v1 v2 in z = 0 on small integers, T2's v0 above or below with 50 fraction bits
+// in each coordinate (off the pair's grid), then an integer shear of determinant 1 (which may round
+// v0 only): T2's v1, v2 lie in π1
+// exactly, so their values are zeros only their own points make exact; every other value, and G1
+// and G2 (through v0, T2's lone vertex), are certain unless v1 or v2 is on a line of T1's edges or
+// a vertex of T1 on the line v1 v2 (a touch: counted). Pass 2 decides every other pair that pass 1
+// leaves (algorithms/exact/README.md, "Lanes off the grid with each value's own points on it").
+TEST(PointsPass2, ValuesExactByTheirOwnPointsDecideOffTheGrid) {
+  GenRng r(2027);
+  std::vector<TrianglePair> pairs;
+  std::size_t touching = 0;
+  while (pairs.size() < 4096) {
+    TrianglePair p;
+    const auto grid_point = [&] { return V(r.integer(-8, 8), r.integer(-8, 8), 0); };
+    for (auto& v : p.t1.v) v = grid_point();
+    p.t2[1] = grid_point(), p.t2[2] = grid_point();
+    // touches made often: v1 at the midpoint of an edge of T1, or the line v1 v2 through a vertex
+    if (const int kind = r.integer(0, 11), e = r.integer(0, 2); kind == 1)
+      p.t2[1] = 0.5 * (p.t1[e] + p.t1[(e + 1) % 3]);
+    else if (kind == 2)
+      p.t2[2] = p.t1[e] + static_cast<double>(r.integer(1, 2)) * (p.t1[e] - p.t2[1]);
+    if (orient_xy(p.t1[0], p.t1[1], p.t1[2]) == 0.0 || p.t2[1] == p.t2[2]) continue;
+    // 50 fraction bits: values through v0 round (products of 53-bit and small integers)
+    const auto off = [&] {
+      return std::ldexp(static_cast<double>(r.integer(0, 1 << 25)), -25) +
+             std::ldexp(static_cast<double>(2 * r.integer(0, 1 << 24) + 1), -50);
+    };
+    const double h = static_cast<double>(r.integer(1, 4)) * (r.coin() ? 1 : -1);
+    p.t2[0] = V(r.integer(-8, 8) + off(), r.integer(-8, 8) + off(), h + off());
+    bool touch = false;
+    for (int e = 0; e < 3; ++e) {
+      const auto &a = p.t1[e], &b = p.t1[(e + 1) % 3];
+      touch |= orient_xy(a, b, p.t2[1]) == 0.0 || orient_xy(a, b, p.t2[2]) == 0.0 ||
+               orient_xy(p.t2[1], p.t2[2], a) == 0.0;
+    }
+    const double m = r.integer(-2, 2), n = r.integer(-2, 2), l = r.integer(-2, 2);
+    for (auto* t : {&p.t1, &p.t2})
+      for (auto& v : t->v) {
+        const double x = v[0] + m * v[1];
+        v = V(x, v[1] + n * v[2], v[2] + l * x);
+      }
+    auto orders = every_order(p);
+    const std::size_t take = 8 + static_cast<std::size_t>(r.integer(0, 8));
+    for (std::size_t k = 0; k < take; ++k) std::swap(orders[k], orders[k + static_cast<std::size_t>(r.integer(0, 71 - static_cast<int>(k)))]);
+    pairs.insert(pairs.end(), orders.begin(), orders.begin() + take);
+    touching += touch ? take : 0u;
+  }
+  pairs.resize(pairs.size() - pairs.size() % 8);  // no batch tail (the one-pair path's)
+  for (ex::Isa isa : kIsas) {
+    if (isa == ex::Isa::scalar || !ex::supported(isa)) continue;
+    const ex::Stats st = run_overlap(isa, pairs);
+    EXPECT_LT(2 * touching, st.pending) << ex::to_string(isa) << ": the set tests little";
+    EXPECT_LE(st.scalar, touching) << ex::to_string(isa) << " of " << st.pending;
+  }
+  expect_all_paths_agree(pairs, "own points off the grid");
+}
+
 // ---------------------------------------------------------------- the grid, axis by axis
 
 namespace {
