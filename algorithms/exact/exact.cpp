@@ -23,7 +23,7 @@ CounterList path_counts() {
   const exact::Isa isa = kSimd ? exact::active_isa() : exact::Isa::scalar;
   return {{"pairs", s.pairs}, {"undecided_by_simd", s.pending}, {"to_scalar", s.scalar},
           {"filter", s.filter}, {"shared", s.shared},          {"grid", s.grid},
-          {"filtered", s.filtered}, {"declined", s.declined},
+          {"filtered", s.filtered}, {"declined", s.declined}, {"one_pair_route", s.direct},
           {std::string("isa:") + exact::to_string(isa), 1}};
 }
 

@@ -25,6 +25,7 @@
 #pragma once
 
 #include "algorithms/exact/detail/one_pair.hpp"
+#include "algorithms/exact/detail/route_choice.hpp"
 #include "algorithms/lanes/isa.hpp"
 #include "tritri/answers.hpp"
 #include "tritri/isa.hpp"
@@ -63,6 +64,7 @@ struct Stats {
   std::uint64_t grid = 0;      // decided with plain double on an integer grid
   std::uint64_t filtered = 0;  // decided with filtered predicates (+ exact engines when needed)
   std::uint64_t declined = 0;  // non-finite input
+  std::uint64_t direct = 0;    // of `pairs`, sent straight to the one-pair path by the route choice
 };
 inline Stats& stats() {
   thread_local Stats s;
@@ -149,9 +151,7 @@ __attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, c
     else out[j] = to_overlap(a);
     ++routes.n[static_cast<int>(route)];
   }
-  Stats& st = stats();
-  st.scalar += count;
-  routes.add_to(st);
+  routes.add_to(stats());
 }
 
 // The pairs the second pass left (`rest`: slots of `pending`, with kGridFlag), from its values:
@@ -178,15 +178,50 @@ __attribute__((noinline)) void handover_pass(const TrianglePair* pairs, Out* out
     else out[j] = to_overlap(a);
     ++routes.n[static_cast<int>(route)];
   }
-  Stats& st = stats();
-  st.scalar += count;
-  routes.add_to(st);
+  routes.add_to(stats());
 }
 
+// One chunk (m pairs) through the SIMD passes and the scalar pass for what they leave; returns
+// how many reached the scalar pass.
 template <bool kRelation, class Out>
-void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
+std::size_t lanes_chunk(const Passes<Out>* passes, std::size_t lanes, const TrianglePair* pairs, std::size_t m,
+                        Out* out) {
   std::uint32_t pending[kChunk], rest[kSlice];
   Handover handover;
+  const std::size_t simd = lanes ? m - m % lanes : 0;
+  const std::size_t np = passes ? passes->first(pairs, simd, out, pending) : 0;
+  // the tail (fewer pairs than lanes; every pair where no kernel runs) through the one-pair
+  // path: a block of pass 2 would carry it in mostly empty lanes (algorithms/exact/README.md,
+  // "The batch's tail")
+  for (std::size_t j = simd; j < m; ++j) pending[np + (j - simd)] = static_cast<std::uint32_t>(j);
+  exact_pass<kRelation>(pairs, out, pending + np, m - simd);
+  std::size_t scalar = m - simd;
+  for (std::size_t s = 0; s < np; s += kSlice) {
+    const std::size_t count = np - s < kSlice ? np - s : kSlice;
+    const std::size_t nr = passes->second(pairs, out, pending + s, count, rest, &handover);
+    handover_pass<kRelation>(pairs, out, pending + s, rest, nr, handover);
+    scalar += nr;
+  }
+  Stats& st = stats();
+  st.pending += np + (m - simd);
+  st.scalar += scalar;
+  return scalar;
+}
+
+// One chunk with every pair through the one-pair path (the filter, then `finish`).
+template <bool kRelation, class Out>
+void one_pair_chunk(const TrianglePair* pairs, std::size_t m, Out* out) {
+  std::uint32_t all[kChunk];
+  for (std::size_t j = 0; j < m; ++j) all[j] = static_cast<std::uint32_t>(j);
+  stats().direct += m;
+  exact_pass<kRelation>(pairs, out, all, m);
+}
+
+// `chooser`: each chunk's route, the lanes or one pair at a time (route_choice.hpp); nullptr:
+// the lanes always (the `*_batch_with` entries, so that a test or exact_diff runs the set it
+// names).
+template <bool kRelation, class Out>
+void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out, RouteChooser* chooser) {
   stats().pairs += n;
   const Kernel* kernel = kKernels[static_cast<std::size_t>(isa)];
   const std::size_t lanes = kernel ? lanes::width(isa) : 0;  // none: every pair to the exact pass
@@ -195,22 +230,28 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
     if constexpr (kRelation) passes = &kernel->relation;
     else passes = &kernel->overlap;
   }
+  if (!passes) chooser = nullptr;  // one route only
   for (std::size_t start = 0; start < n; start += kChunk) {
     const std::size_t m = n - start < kChunk ? n - start : kChunk;
-    const std::size_t simd = lanes ? m - m % lanes : 0;
-    const std::size_t np = passes ? passes->first(pairs + start, simd, out + start, pending) : 0;
-    // the tail (fewer pairs than lanes; every pair where no kernel runs) through the one-pair
-    // path: a block of pass 2 would carry it in mostly empty lanes (algorithms/exact/README.md,
-    // "The batch's tail")
-    for (std::size_t j = simd; j < m; ++j) pending[np + (j - simd)] = static_cast<std::uint32_t>(j);
-    stats().pending += np + (m - simd);
-    exact_pass<kRelation>(pairs + start, out + start, pending + np, m - simd);
-    for (std::size_t s = 0; s < np; s += kSlice) {
-      const std::size_t count = np - s < kSlice ? np - s : kSlice;
-      const std::size_t nr = passes->second(pairs + start, out + start, pending + s, count, rest, &handover);
-      handover_pass<kRelation>(pairs + start, out + start, pending + s, rest, nr, handover);
+    if (!chooser || m < RouteChooser::kMinPairs) {  // not timed
+      if (chooser && chooser->current() == BatchRoute::one_pair) one_pair_chunk<kRelation>(pairs + start, m, out + start);
+      else lanes_chunk<kRelation>(passes, lanes, pairs + start, m, out + start);
+      continue;
     }
+    const BatchRoute route = chooser->next();
+    std::size_t scalar = 0;
+    const std::uint64_t t0 = ticks();
+    if (route == BatchRoute::one_pair) one_pair_chunk<kRelation>(pairs + start, m, out + start);
+    else scalar = lanes_chunk<kRelation>(passes, lanes, pairs + start, m, out + start);
+    chooser->record(route, m, ticks() - t0, scalar);
   }
+}
+
+// The thread's route choice for one level.
+template <bool kRelation>
+RouteChooser& route_chooser() {
+  thread_local RouteChooser c;
+  return c;
 }
 
 }  // namespace detail
@@ -218,17 +259,19 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out) {
 // ---- batches ----
 
 inline void overlap_batch_with(Isa isa, const TrianglePair* pairs, std::size_t n, Overlap* out) {
-  detail::batch<false>(supported(isa) ? isa : detected_isa(), pairs, n, out);
+  detail::batch<false>(supported(isa) ? isa : detected_isa(), pairs, n, out, nullptr);
 }
 inline void relation_batch_with(Isa isa, const TrianglePair* pairs, std::size_t n, RelationAnswer* out) {
-  detail::batch<true>(supported(isa) ? isa : detected_isa(), pairs, n, out);
+  detail::batch<true>(supported(isa) ? isa : detected_isa(), pairs, n, out, nullptr);
 }
 
+// The active set, each chunk on the route that has been the faster on this thread's recent
+// pairs: the lanes, or one pair at a time (detail/route_choice.hpp). The answers are the same.
 inline void overlap_batch(const TrianglePair* pairs, std::size_t n, Overlap* out) {
-  overlap_batch_with(active_isa(), pairs, n, out);
+  detail::batch<false>(active_isa(), pairs, n, out, &detail::route_chooser<false>());
 }
 inline void relation_batch(const TrianglePair* pairs, std::size_t n, RelationAnswer* out) {
-  relation_batch_with(active_isa(), pairs, n, out);
+  detail::batch<true>(active_isa(), pairs, n, out, &detail::route_chooser<true>());
 }
 
 }  // namespace tritri::exact

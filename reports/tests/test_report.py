@@ -277,8 +277,12 @@ class ReportFromFixture(unittest.TestCase):
             moller, = in_mode(results, "call", algorithm="moller97", level="overlap", workload=r[0])
             self.assertEqual(r[header.index("÷ moller97 call")],
                              markdown.ratio(exact["call"][r[0]]["ns_per_pair_median"] / moller["ns_per_pair_median"]))
-            self.assertEqual(r[header.index("undecided by SIMD")], markdown.pct(c["undecided_by_simd"] / c["pairs"]), r[0])
-            self.assertEqual(r[header.index("to scalar path")], markdown.pct(c["to_scalar"] / c["pairs"]), r[0])
+            lanes = c["pairs"] - c.get("one_pair_route", 0)  # pairs through the lanes
+            self.assertEqual(r[header.index("undecided by SIMD")],
+                             markdown.pct(c["undecided_by_simd"] / lanes) if lanes else markdown.pct(None), r[0])
+            self.assertEqual(r[header.index("to scalar path")],
+                             markdown.pct(c["to_scalar"] / lanes) if lanes else markdown.pct(None), r[0])
+            self.assertEqual(r[header.index("one-pair route")], markdown.pct(c.get("one_pair_route", 0) / c["pairs"]), r[0])
             self.assertIn("isa:" + r[-1], c)
 
     # ---- part 6: the papers' own drivers (papers-bench.json) and float against double ----

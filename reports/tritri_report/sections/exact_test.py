@@ -4,8 +4,11 @@ per call (its one-pair entry is the scalar path alone) and in batches (the SIMD 
 the fast inexact tests and the exact peer on the same pools in the same mode.
 
 Read from the bench JSON: each batch-mode `exact` result carries `path_counters` (the algorithm's
-PathCounters: pairs, undecided_by_simd, to_scalar, grid, filtered, declined, isa:NAME). A file
-from before the modes has batch mode only; its `exact-scalar` stood for the scalar path.
+PathCounters: pairs, undecided_by_simd, to_scalar, grid, filtered, declined, one_pair_route,
+isa:NAME). The batch may send chunks straight to its one-pair path (its route choice,
+algorithms/exact/README.md): the SIMD shares are of the pairs that went through the lanes, and
+the pairs sent straight are a column of their own. A file from before the modes has batch mode
+only; its `exact-scalar` stood for the scalar path.
 """
 
 from .. import data, figures
@@ -39,6 +42,13 @@ def share(counters, key):
     return counters.get(key, 0) / pairs if pairs else None
 
 
+def lanes_share(counters, key):
+    """A share of the pairs the batch ran through its SIMD lanes (not sent straight to its one-pair
+    path by the route choice; files from before it have no such pairs)."""
+    pairs = (counters.get("pairs") or 0) - counters.get("one_pair_route", 0)
+    return counters.get(key, 0) / pairs if pairs > 0 else None
+
+
 def time_over(bench, workload, exact_ns, other, mode):
     e = data.bench_entry(bench, other, LEVEL_TIMED, workload, mode)
     t = e.get("ns_per_pair_median") if e else None
@@ -55,7 +65,8 @@ def row(bench, workload, modes):
     c = batch_counters(bench, workload)
     return [workload] + [ns(t) for t in times] + \
         [ratio(time_over(bench, workload, t, p, m)) for p in PEERS for m, t in zip(modes, times)] + \
-        [pct(share(c, "undecided_by_simd")), pct(share(c, "to_scalar")), pct(share(c, "filtered")), isa_of(c)]
+        [pct(lanes_share(c, "undecided_by_simd")), pct(lanes_share(c, "to_scalar")), pct(lanes_share(c, "filtered")),
+         pct(share(c, "one_pair_route")), isa_of(c)]
 
 
 def render(run, part):
@@ -71,16 +82,17 @@ def render(run, part):
              "predicates fall back to an integer engine. Called one pair at a time (call mode) it runs that "
              "scalar classification alone: what a user calling it from a BVH traversal gets. Per pool: ns "
              "per pair (median) %s, on %s with its lanes on %s; exact's time over each peer's on the same "
-             "pool in the same mode; and, in its batch, the share of pairs left undecided by the first SIMD "
-             "pass, sent to the scalar path, and decided by filtered predicates there (the rest of those on "
-             "the grid).\n" % (summary.mode_words(modes), run.cpu, run.isa))
+             "pool in the same mode; and, in its batch, of the pairs it ran through its lanes, the share left "
+             "undecided by the first SIMD pass, sent to the scalar path, and decided by filtered predicates "
+             "there (the rest of those on the grid); last, the share its route choice sent straight to the "
+             "one-pair path (where that was the faster).\n" % (summary.mode_words(modes), run.cpu, run.isa))
     rows = [row(run.bench, w, modes) for w in pools]
     part.add(table(["pool"] + ["exact ns " + m for m in modes] + ["÷ %s %s" % (p, m) for p in PEERS for m in modes] +
-                   ["undecided by SIMD", "to scalar path", "filtered predicates", "SIMD width"], rows))
+                   ["undecided by SIMD", "to scalar path", "filtered predicates", "one-pair route", "SIMD width"], rows))
     families = [w for w in pools if w.startswith("family:")]
     if families:
-        left = [share(batch_counters(run.bench, w), "undecided_by_simd") for w in families]
-        right = [share(batch_counters(run.bench, w), "to_scalar") for w in families]
+        left = [lanes_share(batch_counters(run.bench, w), "undecided_by_simd") for w in families]
+        right = [lanes_share(batch_counters(run.bench, w), "to_scalar") for w in families]
         fig = part.figure("exact-fallback.png", figures.paired_bars, [w.split(":", 1)[1] for w in families],
                           left, right, ("undecided by the SIMD filter", "sent to the exact scalar path"),
                           ylabel="share of the family's pairs", title="exact: the fallback share per family")
