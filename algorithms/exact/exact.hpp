@@ -14,7 +14,9 @@
 //              filter's range) are compacted and decided by the exact scalar classification
 //              (classify.hpp) with plain double predicates when the pair lies on a small
 //              integer grid (exact there), otherwise with filtered predicates that fall back to
-//              the integer engine (intexact.hpp).
+//              the integer engine (intexact.hpp). Where the one-pair path alone is measured
+//              faster on the thread's recent pairs, a chunk takes it instead of the lanes
+//              (detail/route_choice.hpp); *_batch_with always take the lanes.
 //   One pair overlap / relation: the same first pass for one pair in Guigue–Devillers' order with
 //              their early exits (one_pair.hpp), then the same exact scalar classification.
 //   No allocation per pair, no virtual calls; the only indirect choice is the ISA, once per
