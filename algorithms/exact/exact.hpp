@@ -235,17 +235,14 @@ void batch(Isa isa, const TrianglePair* pairs, std::size_t n, Out* out, RouteCho
   if (!passes) chooser = nullptr;  // one route only
   for (std::size_t start = 0; start < n; start += kChunk) {
     const std::size_t m = n - start < kChunk ? n - start : kChunk;
-    if (!chooser || m < RouteChooser::kMinPairs) {  // not timed
-      if (chooser && chooser->current() == BatchRoute::one_pair) one_pair_chunk<kRelation>(pairs + start, m, out + start);
-      else lanes_chunk<kRelation>(passes, lanes, pairs + start, m, out + start);
-      continue;
-    }
-    const BatchRoute route = chooser->next();
+    // small chunks run on the current route untimed (RouteChooser::kMinPairs)
+    const bool timed = chooser && m >= RouteChooser::kMinPairs;
+    const BatchRoute route = !chooser ? BatchRoute::lanes : timed ? chooser->next() : chooser->current();
     std::size_t scalar = 0;
-    const std::uint64_t t0 = ticks();
+    const std::uint64_t t0 = timed ? ticks() : 0;
     if (route == BatchRoute::one_pair) one_pair_chunk<kRelation>(pairs + start, m, out + start);
     else scalar = lanes_chunk<kRelation>(passes, lanes, pairs + start, m, out + start);
-    chooser->record(route, m, ticks() - t0, scalar);
+    if (timed) chooser->record(route, m, ticks() - t0, scalar);
   }
 }
 

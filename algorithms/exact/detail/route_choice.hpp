@@ -60,7 +60,6 @@ class RouteChooser {
 
   BatchRoute next() const { return trying_ ? other(current_) : current_; }
   BatchRoute current() const { return current_; }
-  double cost(BatchRoute r) const { return cost_[index(r)]; }
 
   // `route` ran `pairs` pairs in `spent` ticks; on the lanes route, `scalar` of them reached the
   // scalar pass.
@@ -101,9 +100,9 @@ class RouteChooser {
     if (left_ > 0) return;
     trying_ = false;
     const BatchRoute tried_route = other(current_);
-    const double c = pairs_ ? static_cast<double>(spent_) / static_cast<double>(pairs_) : -1.0;
-    if (c >= 0.0) cost_[index(tried_route)] = c;
-    if (c >= 0.0 && c < cost_[index(current_)]) {
+    const double c = static_cast<double>(spent_) / static_cast<double>(pairs_);  // pairs_ > 0: the last chunk is timed
+    cost_[index(tried_route)] = c;
+    if (c < cost_[index(current_)]) {
       current_ = tried_route;
       gap_ = kMinGap;
     } else {
