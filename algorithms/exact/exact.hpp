@@ -139,14 +139,13 @@ struct RouteCounts {
   }
 };
 
-// The pairs at the `count` indices of `pending`, each from scratch: the one-pair filter, then
-// `finish` (where no SIMD kernel runs).
-template <bool kRelation, class Out>
-__attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, const std::uint32_t* pending,
-                                          std::size_t count) {
+// `count` pairs, each from scratch: the one-pair filter, then `finish` (where no SIMD kernel
+// runs). `at(k)`: the index of the k-th of them in `pairs` and `out`.
+template <bool kRelation, class Out, class At>
+__attribute__((noinline)) void exact_pass(const TrianglePair* pairs, Out* out, std::size_t count, At at) {
   RouteCounts routes;
   for (std::size_t k = 0; k < count; ++k) {
-    const std::uint32_t j = pending[k];
+    const std::size_t j = at(k);
     Route route = Route::filtered;
     const RelationAnswer a = decide<kRelation>(pairs[j], false, &route);
     if constexpr (kRelation) out[j] = a;
@@ -195,8 +194,7 @@ std::size_t lanes_chunk(const Passes<Out>* passes, std::size_t lanes, const Tria
   // the tail (fewer pairs than lanes; every pair where no kernel runs) through the one-pair
   // path: a block of pass 2 would carry it in mostly empty lanes (algorithms/exact/README.md,
   // "The batch's tail")
-  for (std::size_t j = simd; j < m; ++j) pending[np + (j - simd)] = static_cast<std::uint32_t>(j);
-  exact_pass<kRelation>(pairs, out, pending + np, m - simd);
+  exact_pass<kRelation>(pairs, out, m - simd, [simd](std::size_t k) { return simd + k; });
   std::size_t scalar = m - simd;
   for (std::size_t s = 0; s < np; s += kSlice) {
     const std::size_t count = np - s < kSlice ? np - s : kSlice;
@@ -213,10 +211,8 @@ std::size_t lanes_chunk(const Passes<Out>* passes, std::size_t lanes, const Tria
 // One chunk with every pair through the one-pair path (the filter, then `finish`).
 template <bool kRelation, class Out>
 void one_pair_chunk(const TrianglePair* pairs, std::size_t m, Out* out) {
-  std::uint32_t all[kChunk];
-  for (std::size_t j = 0; j < m; ++j) all[j] = static_cast<std::uint32_t>(j);
   stats().direct += m;
-  exact_pass<kRelation>(pairs, out, all, m);
+  exact_pass<kRelation>(pairs, out, m, [](std::size_t k) { return k; });
 }
 
 // `chooser`: each chunk's route, the lanes or one pair at a time (route_choice.hpp); nullptr:

@@ -37,15 +37,11 @@ def isa_of(counters):
     return names[0] if names else "?"
 
 
-def share(counters, key):
-    pairs = counters.get("pairs") or 0
-    return counters.get(key, 0) / pairs if pairs else None
-
-
-def lanes_share(counters, key):
-    """A share of the pairs the batch ran through its SIMD lanes (not sent straight to its one-pair
-    path by the route choice; files from before it have no such pairs)."""
-    pairs = (counters.get("pairs") or 0) - counters.get("one_pair_route", 0)
+def share(counters, key, lanes=False):
+    """counters[key] as a share of the batch's pairs; with `lanes`, of those it ran through its SIMD
+    lanes (not sent straight to its one-pair path by the route choice; files from before it have no
+    such pairs)."""
+    pairs = (counters.get("pairs") or 0) - (counters.get("one_pair_route", 0) if lanes else 0)
     return counters.get(key, 0) / pairs if pairs > 0 else None
 
 
@@ -65,7 +61,7 @@ def row(bench, workload, modes):
     c = batch_counters(bench, workload)
     return [workload] + [ns(t) for t in times] + \
         [ratio(time_over(bench, workload, t, p, m)) for p in PEERS for m, t in zip(modes, times)] + \
-        [pct(lanes_share(c, "undecided_by_simd")), pct(lanes_share(c, "to_scalar")), pct(lanes_share(c, "filtered")),
+        [pct(share(c, "undecided_by_simd", lanes=True)), pct(share(c, "to_scalar", lanes=True)), pct(share(c, "filtered", lanes=True)),
          pct(share(c, "one_pair_route")), isa_of(c)]
 
 
@@ -91,8 +87,8 @@ def render(run, part):
                    ["undecided by SIMD", "to scalar path", "filtered predicates", "one-pair route", "SIMD width"], rows))
     families = [w for w in pools if w.startswith("family:")]
     if families:
-        left = [lanes_share(batch_counters(run.bench, w), "undecided_by_simd") for w in families]
-        right = [lanes_share(batch_counters(run.bench, w), "to_scalar") for w in families]
+        left = [share(batch_counters(run.bench, w), "undecided_by_simd", lanes=True) for w in families]
+        right = [share(batch_counters(run.bench, w), "to_scalar", lanes=True) for w in families]
         fig = part.figure("exact-fallback.png", figures.paired_bars, [w.split(":", 1)[1] for w in families],
                           left, right, ("undecided by the SIMD filter", "sent to the exact scalar path"),
                           ylabel="share of the family's pairs", title="exact: the fallback share per family")
