@@ -50,4 +50,28 @@ inline constexpr auto kCanon = [] {
   return (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
 }
 
+// The one-pair filter's step 3 (one_pair.hpp `filter_pair`): the canonical order's six points for
+// the sign bits `sp` (one_pair.hpp's kSplit order: T1's positive bits, then T2's, each in 1..6;
+// every sign certain, so non-zero): kPick[sp] = (p1, q1, r1, p2, q2, r2) as coordinate offsets,
+// kCanon's row for those signs, indexed by the filter's bits directly. Rows of one-sided patterns
+// are never read (the filter has exited).
+inline constexpr auto kPick = [] {
+  std::array<std::array<unsigned char, 8>, 64> t{};
+  for (unsigned sp = 0; sp < 64; ++sp) {
+    int s1[3], s2[3];
+    for (unsigned k = 0; k < 3; ++k) s1[k] = (sp >> k & 1u) ? 1 : -1, s2[k] = (sp >> (3 + k) & 1u) ? 1 : -1;
+    const auto& row = kCanon[27 * sign_index(s1) + sign_index(s2)];
+    for (int k = 0; k < 6; ++k) t[sp][k] = row[k];
+  }
+  return t;
+}();
+
+// Guigue–Devillers' G1 = [p1,q1,p2,q2] and G2 = [p1,r1,r2,p2] on six certain non-zero signs
+// (`sp` as kPick's), both in two lanes by `gd_lanes` on kPick's row: each lane det3_eval's
+// operations in its order, so its values bit for bit and the pair's bound covers them
+// (algorithms/exact/README.md, "One pair per call", "G1 and G2 in two lanes").
+[[gnu::always_inline]] inline Double2 gd_values(const double* c, unsigned sp) {
+  return gd_lanes(c, kPick[sp].data());
+}
+
 }  // namespace tritri::exact::detail

@@ -4,6 +4,8 @@
 //
 //   boxes     overlap level: the vertices' boxes apart along an axis (and finite input) ->
 //             disjoint, exactly, before any arithmetic;
+//   flat      six points whose box has a zero z extent leave before the values (which would be
+//             zeros): in the plane z = h, decided in 2-D on (x, y) (`flat_first`);
 //   filter    one semi-static bound B for the pair (the extents of its six points, as the
 //             kernel's pair_bound; algorithms/exact/README.md, "Shared bounds"), then
 //             step 1: T1's signs against π2; all certain and equal -> disjoint (overlap level);
@@ -60,32 +62,10 @@ inline bool certainly_slanted(const double s[3], double b) {
   return (std::fabs(s[1] - s[0]) > 3.0 * b) | (std::fabs(s[2] - s[0]) > 3.0 * b);
 }
 
-// The canonical order's six points for the sign bits `sp` (kSplit's order: T1's positive bits,
-// then T2's, each in 1..6; every sign certain, so non-zero): kPick[sp] = (p1, q1, r1, p2, q2, r2)
-// as coordinate offsets, crossing.hpp's kCanon row for those signs, indexed by the filter's bits
-// directly. Rows of one-sided patterns are never read (the filter has exited).
-inline constexpr auto kPick = [] {
-  std::array<std::array<unsigned char, 8>, 64> t{};
-  for (unsigned sp = 0; sp < 64; ++sp) {
-    int s1[3], s2[3];
-    for (unsigned k = 0; k < 3; ++k) s1[k] = (sp >> k & 1u) ? 1 : -1, s2[k] = (sp >> (3 + k) & 1u) ? 1 : -1;
-    const auto& row = kCanon[27 * sign_index(s1) + sign_index(s2)];
-    for (int k = 0; k < 6; ++k) t[sp][k] = row[k];
-  }
-  return t;
-}();
-
-// Guigue–Devillers' G1 = [p1,q1,p2,q2] and G2 = [p1,r1,r2,p2] on six certain non-zero signs
-// (`sp` as kPick's), both in two lanes by crossing.hpp's `gd_lanes` on kPick's row: each lane
-// det3_eval's operations in its order, so its values bit for bit and the pair's bound covers them
-// (algorithms/exact/README.md, "One pair per call", "G1 and G2 in two lanes").
-[[gnu::always_inline]] inline Double2 gd_values(const double* c, unsigned sp) {
-  return gd_lanes(c, kPick[sp].data());
-}
-
 // 1: they meet (relation: `cross`); 0: disjoint; -1: undecided (then `ps` holds both triangles'
-// values and the bound).
-template <bool kRelation>
+// values and the bound); with kFlat, -2: the six points' box has a zero z extent (then ps.box is
+// that box, and no value is computed: `flat_first` takes the pair).
+template <bool kRelation, bool kFlat = true>
 [[gnu::always_inline]] inline int filter_pair(const double* c, PairSigns& ps) {
   Box b1, b2;
   boxes_of(c, b1, b2);
@@ -94,7 +74,15 @@ template <bool kRelation>
   if constexpr (!kRelation)
     if (boxes_apart(b1, b2) && finite18(c)) return 0;
   const Box u = union_of(b1, b2);
-  const double b = bound_of_box(u);
+  // a zero z extent leaves before the values, through the bound's own branch
+  double b;
+  if (!bound_unless_flat(u, b)) [[unlikely]] {
+    if (kFlat && u.lo_z == u.hi_z) {
+      ps.box = u;
+      return -2;
+    }
+    b = bound_of_box(u);
+  }
   // steps 1 and 2 together (lane 0: T1 against π2, lane 1: T2 against π1)
   Double2 s[3];
   plane_values(c, s);
@@ -347,12 +335,42 @@ template <bool kRelation>
   return finish<kRelation>(pair, ps, grid, route);
 }
 
-// One pair: the filter, then `finish`.
+// The filter without the test for a zero z extent, then `finish`: flat_first's way on when its
+// route does not decide. Out of line, so that flat_first keeps no registers for it.
+template <bool kRelation>
+[[gnu::noinline]] RelationAnswer filter_and_finish(const TrianglePair& pair, bool grid, Route* route) {
+  PairSigns ps;
+  const int r = filter_pair<kRelation, false>(pair.t1[0].data(), ps);
+  if (r < 0) return finish<kRelation>(pair, ps, grid, route);
+  if (route) *route = Route::filter;
+  return answer_with(r ? Relation::cross : Relation::disjoint);
+}
+
+// A pair whose six points' box `u` has a zero z extent, before the filter's values (which would
+// all be zeros there): the six z equal and finite, then coplanar_flat_z, whose 2-D grid test
+// refuses a non-finite x or y (algorithms/exact/README.md, "Six points in one plane z = h,
+// before the filter's values"); else filter_and_finish. Out of line, so that the filter keeps
+// nothing across a call.
+template <bool kRelation>
+[[gnu::noinline]] RelationAnswer flat_first(const TrianglePair& pair, const Box& u, bool grid, Route* route) {
+  const double* c = pair.t1[0].data();
+  // the box skips a NaN z but no infinite one: with lo_z = hi_z finite, the six z are equal
+  // unless one is NaN, and then so is their sum
+  const double sum = ((c[2] + c[5]) + (c[8] + c[11])) + (c[14] + c[17]);
+  if (Relation rel; (std::fabs(u.lo_z) <= 0x1.fffffffffffffp1023) & (sum == sum) && coplanar_flat_z<kRelation>(c, u, rel)) {
+    if (route) *route = Route::grid;
+    return answer_with(rel);
+  }
+  return filter_and_finish<kRelation>(pair, grid, route);
+}
+
+// One pair: the filter, then `finish` (or `flat_first`).
 template <bool kRelation>
 RelationAnswer decide(const TrianglePair& pair, bool grid, Route* route) {
   PairSigns ps;
   const int r = filter_pair<kRelation>(pair.t1[0].data(), ps);
-  if (r < 0) return finish_pair<kRelation>(pair, ps, grid, route);
+  if (r == -1) return finish<kRelation>(pair, ps, grid, route);
+  if (r == -2) return flat_first<kRelation>(pair, ps.box, grid, route);
   if (route) *route = Route::filter;
   return answer_with(r ? Relation::cross : Relation::disjoint);
 }
@@ -366,7 +384,8 @@ inline Overlap overlap_one_pair(const TrianglePair& pair) {
   PairSigns ps;
   const int r = filter_pair<false>(pair.t1[0].data(), ps);
   if (r >= 0) return static_cast<Overlap>(r);
-  return to_overlap(finish_pair<false>(pair, ps, false, nullptr));
+  if (r == -2) return to_overlap(flat_first<false>(pair, ps.box, false, nullptr));
+  return to_overlap(finish<false>(pair, ps, false, nullptr));
 }
 
 inline RelationAnswer relation_one_pair(const TrianglePair& pair) { return decide<true>(pair, false, nullptr); }

@@ -128,6 +128,21 @@ inline double bound_of_box(const Box& u) {
   return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
 }
 
+// bound_of_box when the z extent is non-zero and B finite; false (b unset) when the z extent is
+// zero or B would be +inf: the one-pair filter's test for six points in one plane z = h folded
+// into the bound's own branch, so that the pairs that do not take it pay no branch of their own.
+inline bool bound_unless_flat(const Box& u, double& b) {
+  const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3}, least = {bound::kMin3, bound::kMin3};
+  const double ez = u.hi_z - u.lo_z;
+  // ez is hi_z - lo_z, so not below zero: the least subnormal at most ez means ez non-zero; both
+  // of ez's tests in one comparison, false for NaN
+  const Double2 zlo = {0x1p-1074, ez}, zhi = {ez, bound::kMax3};
+  if ((le2(e, most) | le2(zlo, zhi) << 2) != 15u) return false;
+  const Double2 m = max2(e, least);
+  b = bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
+  return true;
+}
+
 // Either lane's three values all above `hi` or all below `lo` (lt2's comparisons, false for NaN):
 // the masks combined in the register and one movmskpd, where six movmskpd and five logical
 // operations on their bits had been compiled.
