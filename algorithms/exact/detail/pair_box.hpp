@@ -118,28 +118,33 @@ inline Box union_of(const Box& a, const Box& b) {
 // maximum at +inf (a NaN is skipped, or leaves NaN), so the extent is +inf or NaN and B = +inf,
 // unless a NaN was skipped; a NaN makes every value it enters NaN. Either way no comparison with
 // B below is true (algorithms/exact/README.md, "One pair per call").
+// B from the extents (x, y) = e and z = ez, each at most kMax3: dmax(e, kMin3) for x and y at once
+// (e finite here): max2 is e > least ? e : least lane by lane.
+inline double bound_of_extents(Double2 e, double ez) {
+  const Double2 least = {bound::kMin3, bound::kMin3};
+  const Double2 m = max2(e, least);
+  return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
+}
+
 inline double bound_of_box(const Box& u) {
-  const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3}, least = {bound::kMin3, bound::kMin3};
+  const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3};
   const double ez = u.hi_z - u.lo_z;
   // `<=` is false for NaN: a NaN extent fails as before; all three tested in one branch
   if ((le2(e, most) | static_cast<unsigned>(ez <= bound::kMax3) << 2) != 7u) return __builtin_inf();
-  // dmax(e, kMin3) for x and y at once (e finite here): max2 is e > least ? e : least lane by lane
-  const Double2 m = max2(e, least);
-  return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
+  return bound_of_extents(e, ez);
 }
 
 // bound_of_box when the z extent is non-zero and B finite; false (b unset) when the z extent is
 // zero or B would be +inf: the one-pair filter's test for six points in one plane z = h folded
 // into the bound's own branch, so that the pairs that do not take it pay no branch of their own.
 inline bool bound_unless_flat(const Box& u, double& b) {
-  const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3}, least = {bound::kMin3, bound::kMin3};
+  const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3};
   const double ez = u.hi_z - u.lo_z;
   // ez is hi_z - lo_z, so not below zero: the least subnormal at most ez means ez non-zero; both
   // of ez's tests in one comparison, false for NaN
   const Double2 zlo = {0x1p-1074, ez}, zhi = {ez, bound::kMax3};
   if ((le2(e, most) | le2(zlo, zhi) << 2) != 15u) return false;
-  const Double2 m = max2(e, least);
-  b = bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
+  b = bound_of_extents(e, ez);
   return true;
 }
 
