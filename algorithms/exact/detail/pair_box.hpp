@@ -97,17 +97,7 @@ inline Double2 swapped(Double2 a) { return __builtin_shufflevector(a, a, 1, 0); 
 // box's z had been two scalar minima and maxima with a move per vertex; the same `<` / `>` lane by
 // lane (minpd and maxpd: `a < b ? a : b`), so the same values, NaN kept as box_of keeps it.
 inline void boxes_of(const double* c, Box& b1, Box& b2) {
-  for (int t = 0; t < 2; ++t) {  // x and y as box_of's, without its z (GCC computed that too)
-    Box& b = t ? b2 : b1;
-    std::memcpy(&b.lo, c + 9 * t, sizeof b.lo);
-    b.hi = b.lo;
-    for (int v = 1; v < 3; ++v) {
-      Double2 p;
-      std::memcpy(&p, c + 9 * t + 3 * v, sizeof p);
-      b.lo = p < b.lo ? p : b.lo;
-      b.hi = p > b.hi ? p : b.hi;
-    }
-  }
+  b1 = box_of(c), b2 = box_of(c + 9);  // their z is overwritten below (and not computed)
   Double2 lo = both_at(c, 2), hi = lo;
   for (int v = 1; v < 3; ++v) {
     const Double2 p = both_at(c, 3 * v + 2);
