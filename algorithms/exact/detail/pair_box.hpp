@@ -113,11 +113,6 @@ inline Box union_of(const Box& a, const Box& b) {
           b.hi_z > a.hi_z ? b.hi_z : a.hi_z};
 }
 
-// The kernel's B for one pair (pair_bound3's value) from the box of its six points, +inf unless
-// every extent is at most kMax3. An infinite coordinate leaves its axis' minimum at -inf or
-// maximum at +inf (a NaN is skipped, or leaves NaN), so the extent is +inf or NaN and B = +inf,
-// unless a NaN was skipped; a NaN makes every value it enters NaN. Either way no comparison with
-// B below is true (algorithms/exact/README.md, "One pair per call").
 // B from the extents (x, y) = e and z = ez, each at most kMax3: dmax(e, kMin3) for x and y at once
 // (e finite here): max2 is e > least ? e : least lane by lane.
 inline double bound_of_extents(Double2 e, double ez) {
@@ -126,6 +121,11 @@ inline double bound_of_extents(Double2 e, double ez) {
   return bound::kRel3 * m[0] * m[1] * dmax(ez, bound::kMin3) + bound::kAbs3;
 }
 
+// The kernel's B for one pair (pair_bound3's value) from the box of its six points, +inf unless
+// every extent is at most kMax3. An infinite coordinate leaves its axis' minimum at -inf or
+// maximum at +inf (a NaN is skipped, or leaves NaN), so the extent is +inf or NaN and B = +inf,
+// unless a NaN was skipped; a NaN makes every value it enters NaN. Either way no comparison with
+// B below is true (algorithms/exact/README.md, "One pair per call").
 inline double bound_of_box(const Box& u) {
   const Double2 e = u.hi - u.lo, most = {bound::kMax3, bound::kMax3};
   const double ez = u.hi_z - u.lo_z;
